@@ -1,0 +1,34 @@
+// Post-processing shared by every strategy: simplification, corner smoothing, arc fitting.
+#pragma once
+
+#include <vector>
+
+#include "swarf/core/vec.h"
+#include "swarf/toolpath/toolpath.h"
+
+namespace swarf {
+
+/// Douglas-Peucker: drops points so that the polyline moves by at most tolerance_mm.
+/// Keeps the first and last points.
+std::vector<Vec3> simplify_polyline(const std::vector<Vec3>& points, double tolerance_mm);
+std::vector<Vec2> simplify_polyline(const std::vector<Vec2>& points, double tolerance_mm);
+
+/// Chaikin corner cutting, `iterations` times, keeping the end points (open polyline).
+/// Each pass replaces a corner by points at `ratio` and 1 - ratio along its edges.
+std::vector<Vec2> chaikin_smooth(const std::vector<Vec2>& points, int iterations,
+                                 double ratio = 0.25);
+
+/// Simplifies each run of consecutive linear moves of the same kind, feed and cutting flag.
+Toolpath simplify(const Toolpath& path, double tolerance_mm);
+
+struct ArcFitOptions {
+  double tolerance_mm = 0.005;    ///< largest distance of a replaced point from the arc
+  double min_radius_mm = 0.05;
+  double max_radius_mm = 1000.0;
+  int min_points = 4;             ///< shortest run of lines to turn into an arc
+};
+/// Replaces runs of linear feed moves at constant height whose points lie on a circle
+/// within the tolerance by XY arcs (G2/G3).
+Toolpath fit_arcs(const Toolpath& path, const ArcFitOptions& options = {});
+
+}  // namespace swarf
