@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "swarf/toolpath/metrics.h"
 #include "swarf/voxel/rough.h"
 #include "voxel/voxel_test_util.h"
 
@@ -132,6 +133,11 @@ TEST(Rough, BlockWithFourBossesCaseStudy1) {
     EXPECT_EQ(unswept(part, r->toolpath, p, &checked), 0u);
     EXPECT_GT(checked, 100u);
     m[s] = r->metrics;
+    // Our figures agree with the shared metrics module's.
+    const ToolpathMetrics shared = compute_metrics(r->toolpath);
+    EXPECT_EQ(m[s].lift_offs, shared.lift_offs);
+    EXPECT_NEAR(m[s].air_length_mm, shared.air_length_mm, 1e-6);
+    EXPECT_NEAR(m[s].cutting_length_mm, shared.cutting_length_mm, 1e-6);
     std::printf("%-7s lift-offs %zu air %.0f mm total %.0f mm regions %zu\n",
                 std::string(rough_sequence_name(seqs[s])).c_str(), m[s].lift_offs,
                 m[s].air_length_mm, m[s].total_length_mm, m[s].regions);
