@@ -100,7 +100,7 @@ TEST(Voxelize, CellTopIsTheExactMaximumOverTheSquare) {
 TEST(Voxelize, OpenMeshIsRejectedOrRepairedWithAWarning) {
   Mesh part = heightfield(
       linspace(0, 10, 4), linspace(0, 10, 4), [](double, double) { return 5.0; }, 0.0);
-  part.triangles.pop_back();  // a hole in one wall
+  part.triangles.erase(part.triangles.begin());  // a hole in the top face
   VoxelizeOptions o;
   o.cell_mm = 1.0;
   auto rejected = voxelize(part, o);
@@ -110,6 +110,15 @@ TEST(Voxelize, OpenMeshIsRejectedOrRepairedWithAWarning) {
   auto repaired = voxelize(part, o);
   ASSERT_TRUE(repaired.ok());
   EXPECT_FALSE(repaired->warnings.empty());
+  // A hole in a vertical wall is crossed by no column ray: parity holds, nothing to repair.
+  Mesh walled = heightfield(
+      linspace(0, 10, 4), linspace(0, 10, 4), [](double, double) { return 5.0; }, 0.0);
+  walled.triangles.pop_back();
+  o.repair_open = false;
+  auto fine = voxelize(walled, o);
+  ASSERT_TRUE(fine.ok());
+  EXPECT_TRUE(fine->warnings.empty());
+  EXPECT_EQ(check_edges(walled).open_edges, 3u);
   const EdgeCheck e = check_edges(part);
   EXPECT_EQ(e.open_edges, 3u);
 }

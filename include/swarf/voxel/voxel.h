@@ -23,8 +23,11 @@ struct VoxelizeOptions {
   Box3 stock;
   double margin_mm = 0.0;
   double top_margin_mm = 0.0;
-  /// Open meshes: false = Error::kOpenMesh; true = repaired conservatively (a column with an
-  /// odd number of crossings is solid from its lowest to its highest crossing) with a warning.
+  /// Open meshes, found as columns that cross the surface an odd number of times (where
+  /// parity is meaningless; a hole no column ray passes through changes nothing): false =
+  /// Error::kOpenMesh; true = repaired conservatively (such a column is solid from its
+  /// lowest to its highest crossing) with a warning. The exact cell tops, which decide
+  /// where the tool may go, come from the triangles and need no closed mesh.
   bool repair_open = false;
 };
 
