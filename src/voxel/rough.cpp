@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -68,6 +69,8 @@ double seconds_since(Clock::time_point t0) {
 // Rapids stop this far above the layer they plunge into (the previous layer's floor is
 // clear there, or the stock top for the first layer).
 constexpr double kApproachMm = 1.0;
+// Cell visits the true-cost refinement of one layer's order may spend (about 50 ms).
+constexpr double kDryRunCellBudget = 2e7;
 
 struct Layer {
   int k = 0;
@@ -80,7 +83,7 @@ class Builder {
  public:
   Builder(const VoxelModel& m, const Reach& reach, const RoughParams& p, Toolpath& tp,
           RoughMetrics& metrics)
-      : m_(m), reach_(reach), p_(p), tp_(tp), metrics_(metrics) {
+      : m_(m), reach_(reach), p_(p), tp_(&tp), metrics_(&metrics) {
     clear_z_ = m.stock.max.z + p.clearance_mm;
   }
 
@@ -107,12 +110,113 @@ class Builder {
     return all_cells_along(p, q, ok) && voxel_detail::straight_move_clear(m_, reach_, k, p, q);
   }
 
+  // Cells on an axis-parallel (or diagonal) segment between two cell centres.
+  template <class F>
+  void for_cells(voxel_detail::CellPoint a, voxel_detail::CellPoint b, F&& f) const {
+    const int di = (b.i > a.i) - (b.i < a.i), dj = (b.j > a.j) - (b.j < a.j);
+    for (voxel_detail::CellPoint c = a;; c.i += di, c.j += dj) {
+      f(m_.column(c.i, c.j));
+      if (c == b) break;
+    }
+  }
+
+  std::size_t cell_at(Vec2 p) const {
+    const int i = static_cast<int>(std::floor((p.x - m_.origin.x) / m_.cell_mm + 0.5));
+    const int j = static_cast<int>(std::floor((p.y - m_.origin.y) / m_.cell_mm + 0.5));
+    return m_.column(std::clamp(i, 0, m_.nx - 1), std::clamp(j, 0, m_.ny - 1));
+  }
+
+  // Breadth-first search from `start` over cells where ok(c) holds, stepping only along the
+  // layer's safe x and y feeds. Steps to every cell, -1 where unreachable.
+  template <class F>
+  std::vector<int> bfs(const std::vector<std::uint8_t>& flags, std::size_t start, F&& ok) const {
+    std::vector<int> dist(flags.size(), -1);
+    if (!ok(start)) return dist;
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    std::vector<std::size_t> queue{start};
+    dist[start] = 0;
+    for (std::size_t h = 0; h < queue.size(); ++h) {
+      const std::size_t c = queue[h];
+      const std::size_t i = c % nx;
+      auto visit = [&](std::size_t d) {
+        if (dist[d] < 0 && ok(d)) {
+          dist[d] = dist[c] + 1;
+          queue.push_back(d);
+        }
+      };
+      if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
+      if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
+      if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
+      if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+    }
+    return dist;
+  }
+
+  // A link that stays down on the way from p to q through cells where ok(c) holds: the
+  // shortest cell path, then pulled straight wherever a straight move is clear. Empty when
+  // there is none. Returns the points after p, ending at q.
+  template <class F>
+  std::vector<Vec2> route(int k, const std::vector<std::uint8_t>& flags, Vec2 p, Vec2 q,
+                          F&& ok) const {
+    const std::size_t from = cell_at(p), to = cell_at(q);
+    // The target itself is where the next cut starts: it may still hold material.
+    auto passable = [&](std::size_t c) { return c == to || c == from || ok(c); };
+    const std::vector<int> dist = bfs(flags, to, passable);
+    if (dist[from] < 0) return {};
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    std::vector<std::size_t> cells{from};
+    for (std::size_t c = from; c != to;) {
+      const std::size_t i = c % nx;
+      std::size_t next = c;
+      auto step = [&](std::size_t d, bool linked) {
+        if (linked && next == c && dist[d] == dist[c] - 1) next = d;
+      };
+      step(c + 1, (flags[c] & voxel_detail::kLinkX) != 0);
+      step(c - 1, i > 0 && (flags[c - 1] & voxel_detail::kLinkX));
+      step(c + nx, (flags[c] & voxel_detail::kLinkY) != 0);
+      step(c - nx, c >= nx && (flags[c - nx] & voxel_detail::kLinkY));
+      if (next == c) return {};  // cannot happen on a consistent distance field
+      cells.push_back(next);
+      c = next;
+    }
+    auto centre = [&](std::size_t c) {
+      return m_.centre(static_cast<int>(c % nx), static_cast<int>(c / nx));
+    };
+    std::vector<Vec2> out;
+    std::size_t a = 0;
+    while (a + 1 < cells.size()) {
+      std::size_t b = a + 1;
+      while (b + 1 < cells.size() &&
+             link_clear(k, centre(cells[a]), centre(cells[b + 1]), passable)) {
+        ++b;
+      }
+      out.push_back(centre(cells[b]));
+      a = b;
+    }
+    return out;
+  }
+
+  bool routing() const { return p_.sequence != RoughSequence::kZigzag; }
+
+  static double polyline_length(Vec2 p, const std::vector<Vec2>& pts) {
+    double len = 0.0;
+    for (const Vec2& q : pts) {
+      len += distance(p, q);
+      p = q;
+    }
+    return len;
+  }
+
   double lift_cost(int k, Vec2 p, Vec2 q) const {
     return 2.0 * (clear_z_ - m_.layer_z(k)) + distance(p, q) + p_.lift_penalty_mm;
   }
 
   // Seed 003 2.4.3: the sequence of this layer's regions.
-  TwoEndsTour sequence(const Layer& L) {
+  // Seed 003 2.4.3 with one of two models of the links, neither exact (which cells are cut
+  // when a link is used depends on the order): optimistic = every machinable cell of the
+  // layer is cut already; pessimistic = only the region just finished (and the region
+  // ends). The emitter then checks the real state.
+  TwoEndsTour sequence(const Layer& L, bool pessimistic) const {
     const int n = static_cast<int>(L.regions.size());
     TwoEndsTour tour;
     tour.order.resize(static_cast<std::size_t>(n));
@@ -127,16 +231,45 @@ class Builder {
       ends[static_cast<std::size_t>(2 * r + 1)] =
           at(L.regions[static_cast<std::size_t>(r)].pts.back());
     }
-    // Planning assumes every machinable cell of the layer is cut by the time a link is
-    // used; the emitter checks the real state and retracts where that was optimistic.
+    std::vector<int> owner;
+    if (pessimistic) {
+      owner.assign(L.flags.size(), -1);
+      for (int r = 0; r < n; ++r) {
+        const CellPath& path = L.regions[static_cast<std::size_t>(r)];
+        for (std::size_t t = 0; t + 1 < path.pts.size(); ++t) {
+          for_cells(path.pts[t], path.pts[t + 1], [&](std::size_t c) { owner[c] = r; });
+        }
+        if (path.pts.size() == 1) owner[m_.column(path.pts[0].i, path.pts[0].j)] = r;
+      }
+      for (const Vec2& e : ends)
+        owner[cell_at(e)] = n;  // ends are passable for all
+    }
     auto free_now = [&](std::size_t c) { return (L.flags[c] & voxel_detail::kFree) != 0; };
+    // Where the straight link is blocked, the tool may still stay down along a path through
+    // cut cells (its 4-connected length bounds the pulled route).
+    std::vector<std::vector<int>> steps(ends.size());
+    for (std::size_t a = 0; a < ends.size(); ++a) {
+      const int ra = static_cast<int>(a / 2);
+      steps[a] = pessimistic ? bfs(L.flags, cell_at(ends[a]),
+                                   [&](std::size_t c) { return owner[c] == ra || owner[c] == n; })
+                             : bfs(L.flags, cell_at(ends[a]), free_now);
+    }
     std::vector<double> cost(static_cast<std::size_t>(4 * n * n), 0.0);
     for (int a = 0; a < 2 * n; ++a) {
       for (int b = a + 1; b < 2 * n; ++b) {
         if (a / 2 == b / 2) continue;
         const Vec2 pa = ends[static_cast<std::size_t>(a)], pb = ends[static_cast<std::size_t>(b)];
-        const double c =
-            link_clear(L.k, pa, pb, free_now) ? distance(pa, pb) : lift_cost(L.k, pa, pb);
+        double c = distance(pa, pb);
+        const int ra = a / 2;
+        const bool straight =
+            pessimistic ? link_clear(L.k, pa, pb,
+                                     [&](std::size_t q) { return owner[q] == ra || owner[q] == n; })
+                        : link_clear(L.k, pa, pb, free_now);
+        if (!straight) {
+          c = lift_cost(L.k, pa, pb);
+          const int st = steps[static_cast<std::size_t>(a)][cell_at(pb)];
+          if (st >= 0) c = std::min(c, st * m_.cell_mm);
+        }
         cost[static_cast<std::size_t>(a * 2 * n + b)] = c;
         cost[static_cast<std::size_t>(b * 2 * n + a)] = c;
       }
@@ -165,7 +298,78 @@ class Builder {
   }
 
   void emit_layer(const Layer& L) {
-    const TwoEndsTour tour = sequence(L);
+    TwoEndsTour tour = sequence(L, false);
+    if (p_.sequence == RoughSequence::kGa && L.regions.size() >= 2) {
+      // The GA's link costs cannot know which cells are cut when a link is used (that
+      // depends on the order). So three orders - the GA's under an optimistic and under a
+      // pessimistic link model, and the Trapped Area discovery order - are each refined on
+      // the true cost (dry runs of the emitter: air path plus lift penalties), and the best
+      // is emitted: sequencing never makes a layer worse than the discovery order.
+      TwoEndsTour discovery;
+      for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
+        discovery.order.push_back(r);
+      discovery.flipped.assign(L.regions.size(), 0);
+      TwoEndsTour candidates[3] = {tour, sequence(L, true), discovery};
+      double best = std::numeric_limits<double>::infinity();
+      for (TwoEndsTour& cand : candidates) {
+        const double c = refine(L, cand, dry_run(L, cand));
+        if (c < best) {
+          best = c;
+          tour = cand;
+        }
+      }
+    }
+    emit_tour(L, tour);
+    prev_flags_ = L.flags;
+    prev_k_ = L.k;
+  }
+
+  // Or-opt on the true cost: move one region elsewhere in the order, either way round,
+  // while a dry run says it helps. Each dry run costs about one pass over the layer's
+  // cells, so the number of them is bounded by kDryRunCellBudget cell visits per layer.
+  double refine(const Layer& L, TwoEndsTour& tour, double best) const {
+    const std::size_t n = tour.order.size();
+    const double per_run = static_cast<double>(L.flags.size()) * static_cast<double>(n);
+    long budget = static_cast<long>(kDryRunCellBudget / std::max(1.0, per_run));
+    bool improved = true;
+    while (improved && budget > 0) {
+      improved = false;
+      for (std::size_t i = 0; i < n && !improved && budget > 0; ++i) {
+        for (std::size_t k = 0; k < n && !improved && budget > 0; ++k) {
+          for (int flip = 0; flip < 2 && !improved && budget > 0; ++flip) {
+            if (k == i && flip == 0) continue;
+            TwoEndsTour cand = tour;
+            const int r = cand.order[i];
+            cand.order.erase(cand.order.begin() + static_cast<std::ptrdiff_t>(i));
+            cand.order.insert(cand.order.begin() + static_cast<std::ptrdiff_t>(k), r);
+            if (flip) cand.flipped[static_cast<std::size_t>(r)] ^= 1;
+            --budget;
+            const double c = dry_run(L, cand);
+            if (c < best - 1e-9) {
+              best = c;
+              tour = std::move(cand);
+              improved = true;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+  // Air path plus lift penalties of emitting this layer with `tour`, without emitting it.
+  double dry_run(const Layer& L, const TwoEndsTour& tour) const {
+    Builder sim = *this;
+    Toolpath scratch;
+    RoughMetrics sm;
+    sim.tp_ = &scratch;
+    sim.metrics_ = &sm;
+    sim.air_ = 0.0;
+    sim.emit_tour(L, tour);
+    return sim.air_ + static_cast<double>(sm.lift_offs) * p_.lift_penalty_mm;
+  }
+
+  void emit_tour(const Layer& L, const TwoEndsTour& tour) {
     cleared_.assign(L.flags.size(), 0);
     for (int r : tour.order) {
       const CellPath& path = L.regions[static_cast<std::size_t>(r)];
@@ -181,8 +385,6 @@ class Builder {
       }
       pos_ = at(pt(n - 1));
     }
-    prev_flags_ = L.flags;
-    prev_k_ = L.k;
   }
 
   void finish() {
@@ -196,18 +398,43 @@ class Builder {
     started_layer_ = L.k;
     if (same_layer) {
       // Stay down only over cells already cut in this layer (2.4.3 links are air moves).
-      if (link_clear(L.k, pos_, q, [&](std::size_t c) { return cleared_[c] != 0; })) {
+      auto cut = [&](std::size_t c) { return cleared_[c] != 0; };
+      if (link_clear(L.k, pos_, q, cut)) {
         feed(to_vec3(q, z), p_.feed_mm_min, false);
         return;
       }
-    } else if (has_pos_ && layer_change_clear(q)) {
-      feed(to_vec3(q, m_.layer_z(prev_k_)), p_.feed_mm_min, false);
-      plunge(z);
-      return;
+      // Not straight: around the obstacle through what this layer has cut, when that is
+      // cheaper than going up and over (not for the plain zig-zag baseline, which links
+      // straight or lifts, as a CAM system without segmentation does).
+      const std::vector<Vec2> way =
+          routing() ? route(L.k, L.flags, pos_, q, cut) : std::vector<Vec2>{};
+      if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
+        for (const Vec2& w : way)
+          feed(to_vec3(w, z), p_.feed_mm_min, false);
+        return;
+      }
+    } else if (has_pos_) {
+      const double zp = m_.layer_z(prev_k_);
+      if (layer_change_clear(q)) {
+        feed(to_vec3(q, zp), p_.feed_mm_min, false);
+        plunge(z);
+        return;
+      }
+      const std::vector<Vec2> way =
+          routing()
+              ? route(prev_k_, prev_flags_, pos_, q,
+                      [&](std::size_t c) { return (prev_flags_[c] & voxel_detail::kFree) != 0; })
+              : std::vector<Vec2>{};
+      if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
+        for (const Vec2& w : way)
+          feed(to_vec3(w, zp), p_.feed_mm_min, false);
+        plunge(z);
+        return;
+      }
     }
     if (has_pos_) {
       rapid(to_vec3(pos_, clear_z_));
-      ++metrics_.lift_offs;
+      ++metrics_->lift_offs;
     }
     rapid(to_vec3(q, clear_z_));
     rapid(to_vec3(q, m_.layer_top(L.k) + kApproachMm));
@@ -215,11 +442,7 @@ class Builder {
   }
 
   void mark(voxel_detail::CellPoint a, voxel_detail::CellPoint b) {
-    const int di = (b.i > a.i) - (b.i < a.i), dj = (b.j > a.j) - (b.j < a.j);
-    for (voxel_detail::CellPoint c = a;; c.i += di, c.j += dj) {
-      cleared_[m_.column(c.i, c.j)] = 1;
-      if (c == b) break;
-    }
+    for_cells(a, b, [&](std::size_t c) { cleared_[c] = 1; });
   }
 
   static Move make(MoveKind kind, Vec3 end, double feed, bool cutting) {
@@ -237,7 +460,8 @@ class Builder {
   }
   void add(Move mv) {
     if (has_last_ && mv.end == last_) return;
-    tp_.moves.push_back(mv);
+    if (has_last_ && (mv.kind == MoveKind::kRapid || !mv.cutting)) air_ += distance(last_, mv.end);
+    tp_->moves.push_back(mv);
     last_ = mv.end;
     has_last_ = true;
     pos_ = mv.end.xy();
@@ -247,8 +471,9 @@ class Builder {
   const VoxelModel& m_;
   const Reach& reach_;
   const RoughParams& p_;
-  Toolpath& tp_;
-  RoughMetrics& metrics_;
+  Toolpath* tp_;
+  RoughMetrics* metrics_;
+  double air_ = 0.0;  // air length emitted so far (what the candidates are compared by)
   double clear_z_ = 0.0;
   Vec2 pos_;
   bool has_pos_ = false;

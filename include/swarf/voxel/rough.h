@@ -37,7 +37,9 @@ enum class OffsetRule {
 };
 
 enum class RoughSequence {
-  kZigzag,       ///< baseline: a plain zig-zag over each layer, row after row, no segmentation
+  /// Baseline: a plain zig-zag over each layer, row after row, no segmentation; links are
+  /// straight or lift-offs (never routed around an obstacle).
+  kZigzag,
   kTrappedArea,  ///< Trapped Area regions in the order they are found (the paper's "TA")
   kGa,           ///< Trapped Area regions sequenced by the GA plus local search ("GA")
 };
@@ -55,9 +57,11 @@ struct RoughParams {
   double clearance_mm = 5.0;       ///< clearance plane above the stock top
   double feed_mm_min = 1000.0;
   double plunge_feed_mm_min = 300.0;
-  /// Extra price of a lift-off in the sequencing, mm of path (a retract costs its vertical
-  /// travel anyway; this is the time a machine loses accelerating, as path length).
-  double lift_penalty_mm = 20.0;
+  /// Extra price of a lift-off, mm of path, in the sequencing and when choosing between a
+  /// lift and a stay-down link routed through cut cells (a retract costs its vertical
+  /// travel anyway). High values favour few lift-offs (the paper's first figure of merit)
+  /// over a short air path; 0 minimises the air path alone.
+  double lift_penalty_mm = 300.0;
   OffsetRule offset = OffsetRule::kDisk;
   RoughSequence sequence = RoughSequence::kGa;
   SequenceOptions ga;             ///< GA settings (seed included)
