@@ -174,6 +174,11 @@ double layer_threshold(const VoxelModel& m, const Reach& reach, int k) {
 
 std::vector<std::uint8_t> layer_flags(const VoxelModel& m, const Reach& reach, int k) {
   const double thr = layer_threshold(m, reach, k);
+  // A layer with no room for the tool (below the part's top everywhere) has no flags at
+  // all: most layers of a prismatic part are like that, and they need no memory.
+  if (std::none_of(reach.centre.begin(), reach.centre.end(), [&](double h) { return h < thr; })) {
+    return {};
+  }
   std::vector<std::uint8_t> f(reach.centre.size(), 0);
   for (int j = 0; j < m.ny; ++j) {
     for (int i = 0; i < m.nx; ++i) {

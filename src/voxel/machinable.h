@@ -34,7 +34,7 @@ Reach compute_reach(const VoxelModel& model, double tool_radius_mm, double allow
 /// Heights at or above this block the tip at layer k (floor allowance included).
 double layer_threshold(const VoxelModel& model, const Reach& reach, int k);
 
-/// Flags (kFree, kLinkX, kLinkY) of every cell at layer k.
+/// Flags (kFree, kLinkX, kLinkY) of every cell at layer k; empty when no cell is free.
 std::vector<std::uint8_t> layer_flags(const VoxelModel& model, const Reach& reach, int k);
 
 /// Exact test of a straight move at layer k between two points (mm): does the stadium of

@@ -69,8 +69,9 @@ double seconds_since(Clock::time_point t0) {
 // Rapids stop this far above the layer they plunge into (the previous layer's floor is
 // clear there, or the stock top for the first layer).
 constexpr double kApproachMm = 1.0;
-// Cell visits the true-cost refinement of one layer's order may spend (about 50 ms).
-constexpr double kDryRunCellBudget = 2e7;
+// Cell visits the true-cost refinement may spend per layer (some 5 ms) and in all.
+constexpr double kDryRunCellBudget = 2e6;
+constexpr double kDryRunTotalBudget = 1.5e7;
 
 struct Layer {
   int k = 0;
@@ -79,11 +80,19 @@ struct Layer {
   std::size_t free_cells = 0;
 };
 
+// Search state shared by a builder and its dry-run copies (one thread).
+struct Scratch {
+  std::vector<int> dist;
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t gen = 0;
+  std::vector<std::size_t> queue;
+};
+
 class Builder {
  public:
   Builder(const VoxelModel& m, const Reach& reach, const RoughParams& p, Toolpath& tp,
-          RoughMetrics& metrics)
-      : m_(m), reach_(reach), p_(p), tp_(&tp), metrics_(&metrics) {
+          RoughMetrics& metrics, Scratch& scratch)
+      : m_(m), reach_(reach), p_(p), tp_(&tp), metrics_(&metrics), scratch_(&scratch) {
     clear_z_ = m.stock.max.z + p.clearance_mm;
   }
 
@@ -128,28 +137,52 @@ class Builder {
 
   // Breadth-first search from `start` over cells where ok(c) holds, stepping only along the
   // layer's safe x and y feeds. Steps to every cell, -1 where unreachable.
+  // Breadth-first search from `start` over cells where ok(c) holds, stepping only along the
+  // layer's safe x and y feeds; stops once every cell in `targets` is reached. Distances (in
+  // steps) are left in the shared scratch field, read with steps_to(); -1 = not reached.
+  // The field is reset by a generation stamp, not cleared: no allocation per search.
   template <class F>
-  std::vector<int> bfs(const std::vector<std::uint8_t>& flags, std::size_t start, F&& ok) const {
-    std::vector<int> dist(flags.size(), -1);
-    if (!ok(start)) return dist;
+  void bfs(const std::vector<std::uint8_t>& flags, std::size_t start, F&& ok,
+           const std::vector<std::size_t>& targets) const {
+    Scratch& sc = *scratch_;
+    if (sc.dist.size() != flags.size()) {
+      sc.dist.assign(flags.size(), 0);
+      sc.stamp.assign(flags.size(), 0);
+      sc.gen = 0;
+    }
+    ++sc.gen;
+    sc.queue.clear();
+    if (!ok(start)) return;
     const auto nx = static_cast<std::size_t>(m_.nx);
-    std::vector<std::size_t> queue{start};
-    dist[start] = 0;
-    for (std::size_t h = 0; h < queue.size(); ++h) {
-      const std::size_t c = queue[h];
+    auto set = [&](std::size_t c, int d) {
+      sc.stamp[c] = sc.gen;
+      sc.dist[c] = d;
+      sc.queue.push_back(c);
+    };
+    set(start, 0);
+    std::size_t next_check = 64;
+    for (std::size_t h = 0; h < sc.queue.size(); ++h) {
+      if (h >= next_check) {
+        bool all = true;
+        for (std::size_t t : targets)
+          all = all && steps_to(t) >= 0;
+        if (all) break;
+        next_check = h * 2;
+      }
+      const std::size_t c = sc.queue[h];
       const std::size_t i = c % nx;
+      const int dc = sc.dist[c];
       auto visit = [&](std::size_t d) {
-        if (dist[d] < 0 && ok(d)) {
-          dist[d] = dist[c] + 1;
-          queue.push_back(d);
-        }
+        if (sc.stamp[d] != sc.gen && ok(d)) set(d, dc + 1);
       };
       if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
       if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
       if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
       if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
     }
-    return dist;
+  }
+  int steps_to(std::size_t c) const {
+    return scratch_->stamp[c] == scratch_->gen ? scratch_->dist[c] : -1;
   }
 
   // A link that stays down on the way from p to q through cells where ok(c) holds: the
@@ -161,15 +194,15 @@ class Builder {
     const std::size_t from = cell_at(p), to = cell_at(q);
     // The target itself is where the next cut starts: it may still hold material.
     auto passable = [&](std::size_t c) { return c == to || c == from || ok(c); };
-    const std::vector<int> dist = bfs(flags, to, passable);
-    if (dist[from] < 0) return {};
+    bfs(flags, to, passable, {from});
+    if (steps_to(from) < 0) return {};
     const auto nx = static_cast<std::size_t>(m_.nx);
     std::vector<std::size_t> cells{from};
     for (std::size_t c = from; c != to;) {
       const std::size_t i = c % nx;
       std::size_t next = c;
       auto step = [&](std::size_t d, bool linked) {
-        if (linked && next == c && dist[d] == dist[c] - 1) next = d;
+        if (linked && next == c && steps_to(d) == steps_to(c) - 1) next = d;
       };
       step(c + 1, (flags[c] & voxel_detail::kLinkX) != 0);
       step(c - 1, i > 0 && (flags[c - 1] & voxel_detail::kLinkX));
@@ -182,16 +215,32 @@ class Builder {
     auto centre = [&](std::size_t c) {
       return m_.centre(static_cast<int>(c % nx), static_cast<int>(c / nx));
     };
+    // Pull the path straight: from each anchor, the farthest cell a clear straight move
+    // reaches, found by galloping then bisection (O(log n) tests instead of O(n)).
     std::vector<Vec2> out;
     std::size_t a = 0;
-    while (a + 1 < cells.size()) {
-      std::size_t b = a + 1;
-      while (b + 1 < cells.size() &&
-             link_clear(k, centre(cells[a]), centre(cells[b + 1]), passable)) {
-        ++b;
+    const std::size_t last = cells.size() - 1;
+    auto clear_to = [&](std::size_t b) {
+      return link_clear(k, centre(cells[a]), centre(cells[b]), passable);
+    };
+    while (a < last) {
+      std::size_t good = a + 1, step = 1;
+      while (good < last) {
+        const std::size_t probe = std::min(last, good + step);
+        if (!clear_to(probe)) {
+          std::size_t lo = good, hi = probe;  // clear at lo, not at hi
+          while (hi - lo > 1) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            (clear_to(mid) ? lo : hi) = mid;
+          }
+          good = lo;
+          break;
+        }
+        good = probe;
+        step *= 2;
       }
-      out.push_back(centre(cells[b]));
-      a = b;
+      out.push_back(centre(cells[good]));
+      a = good;
     }
     return out;
   }
@@ -216,14 +265,8 @@ class Builder {
   // when a link is used depends on the order): optimistic = every machinable cell of the
   // layer is cut already; pessimistic = only the region just finished (and the region
   // ends). The emitter then checks the real state.
-  TwoEndsTour sequence(const Layer& L, bool pessimistic) const {
+  TwoEndsInstance link_costs(const Layer& L, bool pessimistic) const {
     const int n = static_cast<int>(L.regions.size());
-    TwoEndsTour tour;
-    tour.order.resize(static_cast<std::size_t>(n));
-    for (int r = 0; r < n; ++r)
-      tour.order[static_cast<std::size_t>(r)] = r;
-    tour.flipped.assign(static_cast<std::size_t>(n), 0);
-    if (p_.sequence != RoughSequence::kGa || n < 2) return tour;
     std::vector<Vec2> ends(static_cast<std::size_t>(2 * n));
     for (int r = 0; r < n; ++r) {
       ends[static_cast<std::size_t>(2 * r)] =
@@ -247,12 +290,22 @@ class Builder {
     auto free_now = [&](std::size_t c) { return (L.flags[c] & voxel_detail::kFree) != 0; };
     // Where the straight link is blocked, the tool may still stay down along a path through
     // cut cells (its 4-connected length bounds the pulled route).
-    std::vector<std::vector<int>> steps(ends.size());
+    std::vector<std::size_t> end_cells;
+    for (const Vec2& e : ends)
+      end_cells.push_back(cell_at(e));
+    // steps[a * 2n + b]: 4-connected steps from end a to end b, -1 when not connected.
+    std::vector<int> steps(ends.size() * ends.size(), -1);
     for (std::size_t a = 0; a < ends.size(); ++a) {
       const int ra = static_cast<int>(a / 2);
-      steps[a] = pessimistic ? bfs(L.flags, cell_at(ends[a]),
-                                   [&](std::size_t c) { return owner[c] == ra || owner[c] == n; })
-                             : bfs(L.flags, cell_at(ends[a]), free_now);
+      if (pessimistic) {
+        bfs(
+            L.flags, end_cells[a], [&](std::size_t c) { return owner[c] == ra || owner[c] == n; },
+            end_cells);
+      } else {
+        bfs(L.flags, end_cells[a], free_now, end_cells);
+      }
+      for (std::size_t b = 0; b < ends.size(); ++b)
+        steps[a * ends.size() + b] = steps_to(end_cells[b]);
     }
     std::vector<double> cost(static_cast<std::size_t>(4 * n * n), 0.0);
     for (int a = 0; a < 2 * n; ++a) {
@@ -267,7 +320,8 @@ class Builder {
                         : link_clear(L.k, pa, pb, free_now);
         if (!straight) {
           c = lift_cost(L.k, pa, pb);
-          const int st = steps[static_cast<std::size_t>(a)][cell_at(pb)];
+          const int st =
+              steps[static_cast<std::size_t>(a) * ends.size() + static_cast<std::size_t>(b)];
           if (st >= 0) c = std::min(c, st * m_.cell_mm);
         }
         cost[static_cast<std::size_t>(a * 2 * n + b)] = c;
@@ -277,9 +331,16 @@ class Builder {
     TwoEndsInstance in;
     in.regions = n;
     in.cost = std::move(cost);
+    return in;
+  }
+
+  // The GA on an instance, with start costs from where the tool is now.
+  TwoEndsTour solve(const Layer& L, TwoEndsInstance& in) const {
+    in.start_cost.clear();
     if (has_pos_) {
-      in.start_cost.reserve(ends.size());
-      for (const Vec2& e : ends) {
+      for (int q = 0; q < 2 * in.regions; ++q) {
+        const CellPath& path = L.regions[static_cast<std::size_t>(q / 2)];
+        const Vec2 e = at(q % 2 == 0 ? path.pts.front() : path.pts.back());
         in.start_cost.push_back(layer_change_clear(e) ? distance(pos_, e)
                                                       : lift_cost(L.k, pos_, e));
       }
@@ -287,7 +348,12 @@ class Builder {
     SequenceOptions opt = p_.ga;
     opt.seed = p_.ga.seed + static_cast<std::uint64_t>(L.k) * 0x9e3779b97f4a7c15ULL;
     auto solved = solve_two_ends_ga(in, opt);
-    return solved.ok() ? std::move(solved).value() : tour;
+    if (solved.ok()) return std::move(solved).value();
+    TwoEndsTour tour;
+    for (int r = 0; r < in.regions; ++r)
+      tour.order.push_back(r);
+    tour.flipped.assign(static_cast<std::size_t>(in.regions), 0);
+    return tour;
   }
 
   // From the end of the previous layer at its height, straight over to q, then down.
@@ -298,19 +364,36 @@ class Builder {
   }
 
   void emit_layer(const Layer& L) {
-    TwoEndsTour tour = sequence(L, false);
+    TwoEndsTour tour;
+    for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
+      tour.order.push_back(r);
+    tour.flipped.assign(L.regions.size(), 0);
     if (p_.sequence == RoughSequence::kGa && L.regions.size() >= 2) {
       // The GA's link costs cannot know which cells are cut when a link is used (that
-      // depends on the order). So three orders - the GA's under an optimistic and under a
-      // pessimistic link model, and the Trapped Area discovery order - are each refined on
-      // the true cost (dry runs of the emitter: air path plus lift penalties), and the best
-      // is emitted: sequencing never makes a layer worse than the discovery order.
-      TwoEndsTour discovery;
-      for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
-        discovery.order.push_back(r);
-      discovery.flipped.assign(L.regions.size(), 0);
-      TwoEndsTour candidates[3] = {tour, sequence(L, true), discovery};
+      // depends on the order). So several orders - the GA's under an optimistic and under a
+      // pessimistic link model, the Trapped Area discovery order, and for a layer with the
+      // same cells as the last one planned its order both ways round - are refined on the
+      // true cost (dry runs of the emitter: air path plus lift penalties) and the best is
+      // emitted: sequencing never makes a layer worse than the discovery order. Link costs
+      // cost O(cells x regions) to find, so a layer with the same cells reuses them.
+      const bool same = L.flags == plan_flags_;
+      if (!same) {
+        plan_flags_ = L.flags;
+        plan_optimistic_ = link_costs(L, false);
+        plan_pessimistic_ = link_costs(L, true);
+      }
+      std::vector<TwoEndsTour> candidates{solve(L, plan_optimistic_), solve(L, plan_pessimistic_),
+                                          tour};
+      if (same) {
+        TwoEndsTour back = plan_tour_;
+        std::reverse(back.order.begin(), back.order.end());
+        for (auto& f : back.flipped)
+          f ^= 1;
+        candidates.push_back(plan_tour_);
+        candidates.push_back(std::move(back));
+      }
       double best = std::numeric_limits<double>::infinity();
+      dry_run_budget_ = std::min(kDryRunCellBudget, total_budget_);
       for (TwoEndsTour& cand : candidates) {
         const double c = refine(L, cand, dry_run(L, cand));
         if (c < best) {
@@ -318,6 +401,8 @@ class Builder {
           tour = cand;
         }
       }
+      total_budget_ -= std::min(kDryRunCellBudget, total_budget_) - dry_run_budget_;
+      plan_tour_ = tour;
     }
     emit_tour(L, tour);
     prev_flags_ = L.flags;
@@ -325,25 +410,25 @@ class Builder {
   }
 
   // Or-opt on the true cost: move one region elsewhere in the order, either way round,
-  // while a dry run says it helps. Each dry run costs about one pass over the layer's
-  // cells, so the number of them is bounded by kDryRunCellBudget cell visits per layer.
-  double refine(const Layer& L, TwoEndsTour& tour, double best) const {
+  // while a dry run says it helps. A dry run costs about (cells x regions) of the layer;
+  // each layer may spend kDryRunCellBudget on them, the whole run kDryRunTotalBudget.
+  double refine(const Layer& L, TwoEndsTour& tour, double best) {
     const std::size_t n = tour.order.size();
     const double per_run = static_cast<double>(L.flags.size()) * static_cast<double>(n);
-    long budget = static_cast<long>(kDryRunCellBudget / std::max(1.0, per_run));
     bool improved = true;
-    while (improved && budget > 0) {
+    auto affordable = [&] { return dry_run_budget_ >= per_run; };
+    while (improved && affordable()) {
       improved = false;
-      for (std::size_t i = 0; i < n && !improved && budget > 0; ++i) {
-        for (std::size_t k = 0; k < n && !improved && budget > 0; ++k) {
-          for (int flip = 0; flip < 2 && !improved && budget > 0; ++flip) {
+      for (std::size_t i = 0; i < n && !improved && affordable(); ++i) {
+        for (std::size_t k = 0; k < n && !improved && affordable(); ++k) {
+          for (int flip = 0; flip < 2 && !improved && affordable(); ++flip) {
             if (k == i && flip == 0) continue;
             TwoEndsTour cand = tour;
             const int r = cand.order[i];
             cand.order.erase(cand.order.begin() + static_cast<std::ptrdiff_t>(i));
             cand.order.insert(cand.order.begin() + static_cast<std::ptrdiff_t>(k), r);
             if (flip) cand.flipped[static_cast<std::size_t>(r)] ^= 1;
-            --budget;
+            dry_run_budget_ -= per_run;
             const double c = dry_run(L, cand);
             if (c < best - 1e-9) {
               best = c;
@@ -473,7 +558,13 @@ class Builder {
   const RoughParams& p_;
   Toolpath* tp_;
   RoughMetrics* metrics_;
+  Scratch* scratch_;
   double air_ = 0.0;  // air length emitted so far (what the candidates are compared by)
+  double dry_run_budget_ = kDryRunCellBudget;
+  double total_budget_ = kDryRunTotalBudget;
+  std::vector<std::uint8_t> plan_flags_;                // the last layer planned from scratch...
+  TwoEndsTour plan_tour_;                               // ...and the order it got
+  TwoEndsInstance plan_optimistic_, plan_pessimistic_;  // its link costs
   double clear_z_ = 0.0;
   Vec2 pos_;
   bool has_pos_ = false;
@@ -534,6 +625,7 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   t1 = Clock::now();
   parallel_for(layers.size(), ctx.threads, [&](std::size_t k) {
     Layer& L = layers[k];
+    if (L.flags.empty()) return;  // no room for the tool in this layer
     for (std::uint8_t f : L.flags)
       L.free_cells += (f & voxel_detail::kFree) ? 1 : 0;
     L.regions = p.sequence == RoughSequence::kZigzag
@@ -551,7 +643,8 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   std::snprintf(desc, sizeof desc, "D%g flat end mill", p.tool_diameter_mm);
   tp.tool_description = desc;
   tp.clearance_z_mm = m.stock.max.z + p.clearance_mm;
-  Builder b(m, reach, p, tp, res.metrics);
+  Scratch scratch;
+  Builder b(m, reach, p, tp, res.metrics, scratch);
   for (const Layer& L : layers) {
     if (ctx.cancelled()) return Status{Error::kCancelled, "rough: cancelled"};
     if (L.regions.empty()) continue;
