@@ -83,7 +83,7 @@ Result<OperationOutput> run_rough(const OperationInput& in) {
   s = metrics_json(best.metrics);
   s["sequence"] = std::string(rough_sequence_name(rp.sequence));
   s["offset"] = offset;
-  s["rotation_deg"] = best.rotation_deg;
+  s["zigzag_angle_deg"] = best.rotation_deg;
   s["timings_s"] = {{"voxelize", best.timings.voxelize_s},
                     {"preprocess", best.timings.preprocess_s},
                     {"segment", best.timings.segment_s},
@@ -92,7 +92,7 @@ Result<OperationOutput> run_rough(const OperationInput& in) {
   nlohmann::json per_angle = nlohmann::json::array();
   for (std::size_t i = 0; i < study->angles_deg.size(); ++i) {
     nlohmann::json row = metrics_json(study->metrics[i]);
-    row["rotation_deg"] = study->angles_deg[i];
+    row["zigzag_angle_deg"] = study->angles_deg[i];
     per_angle.push_back(row);
   }
   s["orientations"] = per_angle;
@@ -103,8 +103,7 @@ Result<OperationOutput> run_rough(const OperationInput& in) {
   // Tables 1-2 of the paper: the three strategies on the same part at the chosen angle.
   std::ostringstream table;
   table << "strategy,lift_offs,air_length_mm,total_length_mm,regions\n";
-  const Mesh turned =
-      best.rotation_deg == 0.0 ? stl->mesh : rotate_about_z(stl->mesh, best.rotation_deg);
+
   nlohmann::json strategies = nlohmann::json::object();
   for (RoughSequence q :
        {RoughSequence::kZigzag, RoughSequence::kTrappedArea, RoughSequence::kGa}) {
@@ -112,7 +111,8 @@ Result<OperationOutput> run_rough(const OperationInput& in) {
     if (q != rp.sequence) {
       RoughParams other = rp;
       other.sequence = q;
-      auto r = rough(turned, other, ctx);
+      other.zigzag_angle_deg = best.rotation_deg;
+      auto r = rough(stl->mesh, other, ctx);
       if (!r.ok()) return r.status().with_context(in.input_path);
       m = r->metrics;
     }
@@ -138,7 +138,7 @@ const OperationRegistrar kRegistrar{Operation{
         {"sequence", ParamType::kString, "ga",
          "region order: ga (GA + local search), none (Trapped Area order) or zigzag (plain)"},
         {"rotate", ParamType::kNumberList, nlohmann::json::array({0.0}),
-         "part rotations about z to compare, degrees; the shortest path wins"},
+         "feed directions to compare, degrees from x; the shortest path wins"},
         {"seed", ParamType::kInteger, 1, "GA random seed"},
         {"population", ParamType::kInteger, 0, "GA population (0 = 20-100 by size)"},
         {"generations", ParamType::kInteger, 1000, "GA generation limit"},

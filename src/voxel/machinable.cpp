@@ -172,19 +172,23 @@ double layer_threshold(const VoxelModel& m, const Reach& reach, int k) {
   return m.layer_z(k) - reach.allowance_mm - kHeightEps;
 }
 
-std::vector<std::uint8_t> layer_flags(const VoxelModel& m, const Reach& reach, int k) {
+std::vector<std::uint8_t> layer_flags(const VoxelModel& m, const Reach& reach, int k,
+                                      const std::vector<std::uint8_t>& stock) {
   const double thr = layer_threshold(m, reach, k);
   // A layer with no room for the tool (below the part's top everywhere) has no flags at
   // all: most layers of a prismatic part are like that, and they need no memory.
-  if (std::none_of(reach.centre.begin(), reach.centre.end(), [&](double h) { return h < thr; })) {
-    return {};
+  bool any = false;
+  for (std::size_t c = 0; c < reach.centre.size() && !any; ++c) {
+    any = reach.centre[c] < thr && (stock.empty() || stock[c]);
   }
+  if (!any) return {};
   std::vector<std::uint8_t> f(reach.centre.size(), 0);
   for (int j = 0; j < m.ny; ++j) {
     for (int i = 0; i < m.nx; ++i) {
       const std::size_t c = m.column(i, j);
+      if (stock.empty() || stock[c]) f[c] = kStock;
       if (reach.centre[c] >= thr) continue;
-      f[c] = kFree;
+      f[c] |= kFree;
       if (i + 1 < m.nx && reach.link_x[c] < thr && reach.centre[c + 1] < thr) f[c] |= kLinkX;
       if (j + 1 < m.ny && reach.link_y[c] < thr &&
           reach.centre[c + static_cast<std::size_t>(m.nx)] < thr) {

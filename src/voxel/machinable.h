@@ -15,6 +15,7 @@ namespace swarf::voxel_detail {
 inline constexpr std::uint8_t kFree = 1;   ///< the tool centre may stand here
 inline constexpr std::uint8_t kLinkX = 2;  ///< the feed to cell (i + 1, j) is safe
 inline constexpr std::uint8_t kLinkY = 4;  ///< the feed to cell (i, j + 1) is safe
+inline constexpr std::uint8_t kStock = 8;  ///< the cell holds stock to remove
 
 struct Reach {
   /// Highest part point that the tool (grown by the allowance) can touch: standing at the
@@ -34,8 +35,11 @@ Reach compute_reach(const VoxelModel& model, double tool_radius_mm, double allow
 /// Heights at or above this block the tip at layer k (floor allowance included).
 double layer_threshold(const VoxelModel& model, const Reach& reach, int k);
 
-/// Flags (kFree, kLinkX, kLinkY) of every cell at layer k; empty when no cell is free.
-std::vector<std::uint8_t> layer_flags(const VoxelModel& model, const Reach& reach, int k);
+/// Flags (kFree, kLinkX, kLinkY, kStock) of every cell at layer k; empty when no cell
+/// holding stock is free. `stock` marks the cells whose square meets the stock (empty =
+/// all).
+std::vector<std::uint8_t> layer_flags(const VoxelModel& model, const Reach& reach, int k,
+                                      const std::vector<std::uint8_t>& stock);
 
 /// Exact test of a straight move at layer k between two points (mm): does the stadium of
 /// radius reach.radius_mm around it stay clear of every cell square whose base height

@@ -36,10 +36,16 @@ std::vector<Run> find_runs(const std::vector<std::uint8_t>& flags, int nx, int n
   for (int j = 0; j < ny; ++j) {
     const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx);
     for (int i = 0; i < nx; ++i) {
-      if (!(flags[row + static_cast<std::size_t>(i)] & kFree)) continue;
+      // Cells to machine: the tool fits and there is stock to remove.
+      auto machine = [&](int x) {
+        return (flags[row + static_cast<std::size_t>(x)] & (kFree | kStock)) == (kFree | kStock);
+      };
+      if (!machine(i)) continue;
       Run r{j, i, i};
-      while (r.b + 1 < nx && (flags[row + static_cast<std::size_t>(r.b)] & kLinkX))
+      while (r.b + 1 < nx && (flags[row + static_cast<std::size_t>(r.b)] & kLinkX) &&
+             machine(r.b + 1)) {
         ++r.b;
+      }
       runs.push_back(r);
       i = r.b;
     }

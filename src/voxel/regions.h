@@ -20,7 +20,7 @@ struct CellPath {
   std::vector<std::uint8_t> cutting;
 };
 
-/// A maximal row interval [a, b] of free cells joined by safe x-moves.
+/// A maximal row interval [a, b] of free cells holding stock, joined by safe x-moves.
 struct Run {
   int j = 0, a = 0, b = 0;
 };

@@ -455,7 +455,11 @@ class Builder {
   }
 
   void emit_tour(const Layer& L, const TwoEndsTour& tour) {
-    cleared_.assign(L.flags.size(), 0);
+    // Cells without stock hold nothing to cut: links may cross them from the start.
+    cleared_.resize(L.flags.size());
+    for (std::size_t c = 0; c < L.flags.size(); ++c) {
+      cleared_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
+    }
     for (int r : tour.order) {
       const CellPath& path = L.regions[static_cast<std::size_t>(r)];
       const bool rev = tour.flipped[static_cast<std::size_t>(r)] != 0;
@@ -591,12 +595,38 @@ void measure(const Toolpath& tp, RoughMetrics& m) {
   }
 }
 
+// Cells whose square meets the convex stock outline (empty outline: every cell).
+std::vector<std::uint8_t> stock_mask(const VoxelModel& m, const std::vector<Vec2>& outline) {
+  if (outline.empty()) return {};
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(m.nx) * static_cast<std::size_t>(m.ny));
+  const double h = 0.5 * m.cell_mm;
+  for (int j = 0; j < m.ny; ++j) {
+    for (int i = 0; i < m.nx; ++i) {
+      const Vec2 c = m.centre(i, j);
+      const Vec2 corners[4] = {c + Vec2{-h, -h}, c + Vec2{h, -h}, c + Vec2{h, h}, c + Vec2{-h, h}};
+      // Separating axes: the outline's edge normals (the square's axes are covered by the
+      // grid spanning the outline's box).
+      bool meets = true;
+      for (std::size_t e = 0; e < outline.size() && meets; ++e) {
+        const Vec2 a = outline[e], b = outline[(e + 1) % outline.size()];
+        bool all_outside = true;
+        for (const Vec2& q : corners)
+          all_outside = all_outside && cross(b - a, q - a) < 0.0;
+        if (all_outside) meets = false;
+      }
+      mask[m.column(i, j)] = meets ? 1 : 0;
+    }
+  }
+  return mask;
+}
+
 }  // namespace
 
 Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context& ctx) {
   SWARF_RETURN_IF_ERROR(validate(p));
   const auto t0 = Clock::now();
   RoughResult res;
+  res.rotation_deg = p.zigzag_angle_deg;
   VoxelizeOptions vo;
   vo.cell_mm = p.stepover_mm;
   vo.layer_mm = p.stepdown_mm;
@@ -604,7 +634,36 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   vo.margin_mm = p.margin_mm;
   vo.top_margin_mm = p.top_margin_mm;
   vo.repair_open = p.repair_open_mesh;
-  auto vox = voxelize(part, vo, ctx);
+  // Seed 003 3.1.1 without re-clamping the part: part and stock are turned by -angle so
+  // that the grid's x axis runs along the wanted feed direction, and the toolpath is turned
+  // back at the end. Cells outside the turned stock hold nothing to cut.
+  const double angle = p.zigzag_angle_deg;
+  Mesh turned;
+  std::vector<Vec2> outline;
+  if (angle != 0.0) {
+    Box3 stock = p.stock;
+    if (stock.empty()) {
+      for (const Vec3& v : part.vertices)
+        stock.add(v);
+      stock = Box3{
+          {stock.min.x - p.margin_mm, stock.min.y - p.margin_mm, stock.min.z},
+          {stock.max.x + p.margin_mm, stock.max.y + p.margin_mm, stock.max.z + p.top_margin_mm}};
+    }
+    turned = rotate_about_z(part, -angle);
+    Box3 grid = stock;
+    grid.min.x = grid.min.y = std::numeric_limits<double>::infinity();
+    grid.max.x = grid.max.y = -std::numeric_limits<double>::infinity();
+    for (Vec2 c : {stock.min.xy(), Vec2{stock.max.x, stock.min.y}, stock.max.xy(),
+                   Vec2{stock.min.x, stock.max.y}}) {
+      outline.push_back(rotated(c, deg_to_rad(-angle)));
+      grid.min.x = std::min(grid.min.x, outline.back().x);
+      grid.min.y = std::min(grid.min.y, outline.back().y);
+      grid.max.x = std::max(grid.max.x, outline.back().x);
+      grid.max.y = std::max(grid.max.y, outline.back().y);
+    }
+    vo.stock = grid;
+  }
+  auto vox = voxelize(angle != 0.0 ? turned : part, vo, ctx);
   if (!vox.ok()) return vox.status();
   const VoxelModel& m = *vox;
   res.warnings = m.warnings;
@@ -614,10 +673,11 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   auto t1 = Clock::now();
   const Reach reach = voxel_detail::compute_reach(m, 0.5 * p.tool_diameter_mm, p.stock_to_leave_mm,
                                                   p.offset, ctx.threads);
+  const std::vector<std::uint8_t> stock_cells = stock_mask(m, outline);
   std::vector<Layer> layers(static_cast<std::size_t>(m.layers));
   parallel_for(layers.size(), ctx.threads, [&](std::size_t k) {
     layers[k].k = static_cast<int>(k);
-    layers[k].flags = voxel_detail::layer_flags(m, reach, static_cast<int>(k));
+    layers[k].flags = voxel_detail::layer_flags(m, reach, static_cast<int>(k), stock_cells);
   });
   res.timings.preprocess_s = seconds_since(t1);
   if (ctx.cancelled()) return Status{Error::kCancelled, "rough: cancelled"};
@@ -626,8 +686,9 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   parallel_for(layers.size(), ctx.threads, [&](std::size_t k) {
     Layer& L = layers[k];
     if (L.flags.empty()) return;  // no room for the tool in this layer
+    constexpr std::uint8_t kCut = voxel_detail::kFree | voxel_detail::kStock;
     for (std::uint8_t f : L.flags)
-      L.free_cells += (f & voxel_detail::kFree) ? 1 : 0;
+      L.free_cells += (f & kCut) == kCut ? 1 : 0;
     L.regions = p.sequence == RoughSequence::kZigzag
                     ? voxel_detail::zigzag_runs(L.flags, m.nx, m.ny)
                     : voxel_detail::trapped_area_regions(L.flags, m.nx, m.ny);
@@ -660,6 +721,10 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
                   "rough: no layer has room for the tool (stock too small for the tool "
                   "plus the allowance?)"};
   }
+  if (angle != 0.0) {
+    for (Move& mv : tp.moves)
+      mv.end = to_vec3(rotated(mv.end.xy(), deg_to_rad(angle)), mv.end.z);
+  }
   measure(tp, res.metrics);
   res.timings.total_s = seconds_since(t0);
   return res;
@@ -672,8 +737,10 @@ Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams
   OrientationResult out;
   for (double a : angles_deg) {
     if (!std::isfinite(a)) return bad_parameter("orientation study: angle is not finite");
-    auto r = rough(a == 0.0 ? part : rotate_about_z(part, a), p, ctx);
-    if (!r.ok()) return r.status().with_context("rotation " + std::to_string(a) + " deg");
+    RoughParams q = p;
+    q.zigzag_angle_deg = a;
+    auto r = rough(part, q, ctx);
+    if (!r.ok()) return r.status().with_context("feed angle " + std::to_string(a) + " deg");
     out.angles_deg.push_back(a);
     out.metrics.push_back(r->metrics);
     const bool better = out.metrics.size() == 1 ||
@@ -681,7 +748,6 @@ Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams
     if (better) {
       out.best = out.metrics.size() - 1;
       out.best_result = std::move(r).value();
-      out.best_result.rotation_deg = a;
     }
   }
   return out;

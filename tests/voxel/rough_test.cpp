@@ -217,9 +217,26 @@ TEST(Rough, OrientationStudyPicksTheShortestPath) {
     EXPECT_LE(o->metrics[o->best].total_length_mm, m.total_length_mm);
   }
   EXPECT_EQ(o->best_result.rotation_deg, o->angles_deg[o->best]);
-  // The chosen program is safe on the rotated part.
-  const Mesh turned = rotate_about_z(part, o->best_result.rotation_deg);
-  EXPECT_EQ(gouges(turned, o->best_result.toolpath, 5.0, 3.0), 0u);
+  // Every angle's program keeps off the part in the part's own frame, and the feed lines
+  // (cutting moves at constant height) run along the angle.
+  for (double a : {20.0, 45.0}) {
+    RoughParams q = p;
+    q.zigzag_angle_deg = a;
+    auto r = rough(part, q);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(gouges(part, r->toolpath, 5.0, 3.0), 0u) << a;
+    std::size_t along = 0, lines = 0;
+    Vec3 at = r->toolpath.moves.front().end;
+    for (const Move& mv : r->toolpath.moves) {
+      const Vec2 d = mv.end.xy() - at.xy();
+      if (mv.kind == MoveKind::kFeed && mv.cutting && mv.end.z == at.z && norm(d) > 20.0) {
+        ++lines;
+        along += std::abs(cross(normalized(d), rotated({1, 0}, deg_to_rad(a)))) < 1e-9;
+      }
+      at = mv.end;
+    }
+    EXPECT_GT(along, lines / 2) << a;
+  }
 }
 
 TEST(Rough, RejectsBadParameters) {

@@ -62,6 +62,9 @@ struct RoughParams {
   /// travel anyway). High values favour few lift-offs (the paper's first figure of merit)
   /// over a short air path; 0 minimises the air path alone.
   double lift_penalty_mm = 300.0;
+  /// Feed lines run at this angle to the x axis (seed 003 3.1.1): part and stock stay
+  /// where they are and the toolpath comes out in the part's frame.
+  double zigzag_angle_deg = 0.0;
   OffsetRule offset = OffsetRule::kDisk;
   RoughSequence sequence = RoughSequence::kGa;
   SequenceOptions ga;             ///< GA settings (seed included)
@@ -101,12 +104,13 @@ struct RoughResult {
 Result<RoughResult> rough(const Mesh& part, const RoughParams& params,
                           const Context& ctx = default_context());
 
-/// Seed 003 section 3.1.1: the part rotated about z by each angle (the toolpath is in the
-/// rotated part's frame: the part is clamped turned by that angle).
+/// Seed 003 section 3.1.1: the paper turns the part on the table; turning the feed
+/// direction instead (RoughParams::zigzag_angle_deg) gives the same toolpaths relative to
+/// the part while part, stock and program stay in the part's frame.
 struct OrientationResult {
   std::vector<double> angles_deg;
   std::vector<RoughMetrics> metrics;  ///< per angle
-  std::size_t best = 0;               ///< index of the shortest total path
+  std::size_t best = 0;               ///< index of the shortest total path (first if tied)
   RoughResult best_result;
 };
 Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams& params,
