@@ -86,6 +86,8 @@ struct Scratch {
   std::vector<std::uint32_t> stamp;
   std::uint32_t gen = 0;
   std::vector<std::size_t> queue;
+  std::vector<std::size_t> parent;
+  std::vector<std::vector<std::size_t>> buckets;
 };
 
 class Builder {
@@ -185,6 +187,69 @@ class Builder {
     return scratch_->stamp[c] == scratch_->gen ? scratch_->dist[c] : -1;
   }
 
+  // Shortest 4-connected path from `from` to `to` over cells where ok(c) holds, along the
+  // layer's safe feeds: A* with the Manhattan distance (exact for unit steps, so the
+  // search stays near the straight line instead of flooding the layer), bucket queue.
+  template <class F>
+  bool astar(const std::vector<std::uint8_t>& flags, std::size_t from, std::size_t to, F&& ok,
+             std::vector<std::size_t>& cells) const {
+    Scratch& sc = *scratch_;
+    if (sc.dist.size() != flags.size()) {
+      sc.dist.assign(flags.size(), 0);
+      sc.stamp.assign(flags.size(), 0);
+      sc.gen = 0;
+    }
+    sc.parent.resize(flags.size());
+    ++sc.gen;
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    const long ti = static_cast<long>(to % nx), tj = static_cast<long>(to / nx);
+    auto h = [&](std::size_t c) {
+      return static_cast<std::size_t>(std::labs(static_cast<long>(c % nx) - ti) +
+                                      std::labs(static_cast<long>(c / nx) - tj));
+    };
+    for (auto& b : sc.buckets)
+      b.clear();
+    auto push = [&](std::size_t c, int g) {
+      sc.stamp[c] = sc.gen;
+      sc.dist[c] = g;
+      const std::size_t f = static_cast<std::size_t>(g) + h(c);
+      if (f >= sc.buckets.size()) sc.buckets.resize(f + 1);
+      sc.buckets[f].push_back(c);
+    };
+    sc.parent[from] = from;
+    push(from, 0);
+    for (std::size_t f = h(from); f < sc.buckets.size(); ++f) {
+      // Last in, first out within a bucket: among equal f the deepest g first, which
+      // breaks the many ties of the Manhattan metric towards the target.
+      while (!sc.buckets[f].empty()) {
+        const std::size_t c = sc.buckets[f].back();
+        sc.buckets[f].pop_back();
+        if (static_cast<std::size_t>(sc.dist[c]) + h(c) != f) continue;  // stale entry
+        if (c == to) {
+          cells.clear();
+          for (std::size_t x = to; x != from; x = sc.parent[x])
+            cells.push_back(x);
+          cells.push_back(from);
+          std::reverse(cells.begin(), cells.end());
+          return true;
+        }
+        const int g = sc.dist[c] + 1;
+        auto visit = [&](std::size_t d) {
+          if ((sc.stamp[d] != sc.gen || g < sc.dist[d]) && ok(d)) {
+            sc.parent[d] = c;
+            push(d, g);
+          }
+        };
+        const std::size_t i = c % nx;
+        if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
+        if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
+        if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
+        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+      }
+    }
+    return false;
+  }
+
   // A link that stays down on the way from p to q through cells where ok(c) holds: the
   // shortest cell path, then pulled straight wherever a straight move is clear. Empty when
   // there is none. Returns the points after p, ending at q.
@@ -194,24 +259,9 @@ class Builder {
     const std::size_t from = cell_at(p), to = cell_at(q);
     // The target itself is where the next cut starts: it may still hold material.
     auto passable = [&](std::size_t c) { return c == to || c == from || ok(c); };
-    bfs(flags, to, passable, {from});
-    if (steps_to(from) < 0) return {};
+    std::vector<std::size_t> cells;
+    if (!astar(flags, from, to, passable, cells)) return {};
     const auto nx = static_cast<std::size_t>(m_.nx);
-    std::vector<std::size_t> cells{from};
-    for (std::size_t c = from; c != to;) {
-      const std::size_t i = c % nx;
-      std::size_t next = c;
-      auto step = [&](std::size_t d, bool linked) {
-        if (linked && next == c && steps_to(d) == steps_to(c) - 1) next = d;
-      };
-      step(c + 1, (flags[c] & voxel_detail::kLinkX) != 0);
-      step(c - 1, i > 0 && (flags[c - 1] & voxel_detail::kLinkX));
-      step(c + nx, (flags[c] & voxel_detail::kLinkY) != 0);
-      step(c - nx, c >= nx && (flags[c - nx] & voxel_detail::kLinkY));
-      if (next == c) return {};  // cannot happen on a consistent distance field
-      cells.push_back(next);
-      c = next;
-    }
     auto centre = [&](std::size_t c) {
       return m_.centre(static_cast<int>(c % nx), static_cast<int>(c / nx));
     };
