@@ -537,7 +537,9 @@ class Builder {
     started_layer_ = L.k;
     if (same_layer) {
       // Stay down only over cells already cut in this layer (2.4.3 links are air moves).
-      auto cut = [&](std::size_t c) { return cleared_[c] != 0; };
+      // The cell where the next cut starts may hold material: the link ends there.
+      const std::size_t target = cell_at(q);
+      auto cut = [&](std::size_t c) { return cleared_[c] != 0 || c == target; };
       if (link_clear(L.k, pos_, q, cut)) {
         feed(to_vec3(q, z), p_.feed_mm_min, false);
         return;
