@@ -70,7 +70,11 @@ class Rs274 : public ::testing::Test {
     const fs::path file = dir_ / name;
     std::ofstream(file, std::ios::binary) << program;
     const fs::path out = dir_ / (name + ".out"), err = dir_ / (name + ".err");
-    const std::string cmd = "'" + rs274_ + "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" +
+    // rs274 keeps state outside its arguments (shared memory, a parameter file in the
+    // working folder): concurrent runs from parallel ctest corrupt each other. Serialise
+    // them with a lock file and run each in its own folder.
+    const std::string cmd = "cd '" + dir_.string() + "' && flock /tmp/swarf_rs274.lock '" +
+                            rs274_ + "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" +
                             file.string() + "' > '" + out.string() + "' 2> '" + err.string() +
                             "' < /dev/null";
     Rs274Run r;
