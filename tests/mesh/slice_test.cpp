@@ -219,6 +219,54 @@ TEST(Slice, RealPocketPart) {
   EXPECT_DOUBLE_EQ(area(s[3]), 100.0 * 100 - 40.0 * 40);
 }
 
+// Cavalieri: the integral of the section area along an axis is the volume, which
+// check_mesh computes independently by the divergence theorem.
+double cavalieri_volume(const Mesh& m, Axis axis, int n) {
+  const Box3 b = bounds(m);
+  const double lo = b.min[static_cast<int>(axis)], hi = b.max[static_cast<int>(axis)];
+  const double pitch = (hi - lo) / n;
+  const std::vector<double> levels = slice_levels(lo + 0.5 * pitch, hi - 0.5 * pitch, pitch);
+  double v = 0.0;
+  for (const PolygonSet& s : slice_mesh(m, axis, levels))
+    v += area(s) * pitch;
+  return v;
+}
+
+TEST(Slice, SectionAreasIntegrateToTheVolumeOfRealParts) {
+  for (const char* name : {"opencamlib_ktoolcav.stl", "openscad_bad-stl-pcbvicebar.stl"}) {
+    const Result<StlFile> f = read_stl(std::string(SWARF_TEST_DATA_DIR) + "/mesh/" + name);
+    ASSERT_TRUE(f.ok()) << f.status().to_string();
+    const double v = std::abs(f->check.volume_mm3);
+    for (Axis a : {Axis::kX, Axis::kY, Axis::kZ})
+      EXPECT_NEAR(cavalieri_volume(f->mesh, a, 300), v, 0.005 * v)
+          << name << " axis " << static_cast<int>(a);
+  }
+}
+
+TEST(Slice, SectionAreasIntegrateToTheVolumeOfTheTorusPart) {
+  const Mesh m = make_filleted_torus_part({});
+  const double v = check_mesh(m).volume_mm3;
+  for (Axis a : {Axis::kX, Axis::kZ})
+    EXPECT_NEAR(cavalieri_volume(m, a, 300), v, 0.002 * v);
+}
+
+TEST(Slice, OpenSurfacesGiveNormalizedSections) {
+  // opencamlib's demo scene: open domes and a torus surface over a base plane.
+  const Result<StlFile> f =
+      read_stl(std::string(SWARF_TEST_DATA_DIR) + "/mesh/opencamlib_demo.stl");
+  ASSERT_TRUE(f.ok());
+  const auto s = slice_mesh(f->mesh, Axis::kZ, slice_levels(0.05, 1.95, 0.1));
+  int non_empty = 0;
+  for (const PolygonSet& p : s) {
+    non_empty += p.empty() ? 0 : 1;
+    EXPECT_LE(area(p), 100.0 + 1e-9);
+    EXPECT_NEAR(area(normalized(p)), area(p), 1e-9);
+    for (const Ring& r : p.rings)
+      EXPECT_GE(r.size(), 3u);
+  }
+  EXPECT_GT(non_empty, 10);
+}
+
 TEST(Slice, EmptyInputs) {
   EXPECT_TRUE(slice_mesh(Mesh{}, Axis::kZ, {0.0})[0].empty());
   EXPECT_TRUE(slice_mesh(make_box({{0, 0, 0}, {1, 1, 1}}), Axis::kZ, {}).empty());
