@@ -95,7 +95,7 @@ class Slicer {
   Axis plane_;
   std::vector<std::array<std::uint32_t, 3>> tri_edges_;  ///< edge id of corner k -> k+1
   std::vector<std::array<std::uint32_t, 2>> edge_ends_;  ///< vertex indices, lower first
-  double lo_ = 0.0, width_ = 1.0;
+  double lo_ = 0.0, hi_ = 0.0, width_ = 1.0;             ///< axis range of the mesh, bucket width
   std::vector<std::uint32_t> bucket_start_;
   std::vector<Entry> bucket_entries_;
 };
@@ -143,6 +143,7 @@ void Slicer::build_buckets() {
     return;
   }
   lo_ = lo;
+  hi_ = hi;
   // Buckets about as wide as a typical triangle is tall: a level then visits roughly twice
   // the triangles it cuts, and each triangle sits in about two buckets. Widen when tall
   // triangles would make the table large.
@@ -191,7 +192,9 @@ Vec2 Slicer::edge_point(std::uint32_t edge, double level) const {
 }
 
 PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
-  if (!std::isfinite(level) || bucket_start_.size() < 2 || level <= lo_) return {};
+  // A triangle is cut when min < level <= max, so nothing is cut outside (lo, hi]; checking
+  // that first also keeps the bucket index below from overflowing.
+  if (!std::isfinite(level) || bucket_start_.size() < 2 || level <= lo_ || level > hi_) return {};
   const auto bucket = static_cast<std::size_t>((level - lo_) / width_);
   if (bucket + 1 >= bucket_start_.size()) return {};
 
