@@ -70,7 +70,11 @@ class Rs274 : public ::testing::Test {
     const fs::path file = dir_ / name;
     std::ofstream(file, std::ios::binary) << program;
     const fs::path out = dir_ / (name + ".out"), err = dir_ / (name + ".err");
-    const std::string cmd = "'" + rs274_ + "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" +
+    // rs274 keeps state outside its arguments (shared memory, a parameter file in the
+    // working folder): concurrent runs from parallel ctest corrupt each other. Serialise
+    // them with a lock file and run each in its own folder.
+    const std::string cmd = "cd '" + dir_.string() + "' && flock /tmp/swarf_rs274.lock '" +
+                            rs274_ + "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" +
                             file.string() + "' > '" + out.string() + "' 2> '" + err.string() +
                             "' < /dev/null";
     Rs274Run r;
@@ -208,6 +212,14 @@ TEST_F(Rs274, ReaderSemanticsMatchLinuxCnc) {
       "G90 G20 G0 X1 Y1 Z1\n G1 X1.5 F10\n G2 X2.5 Y1 I0.5 J0\n"
       "G21 M2\n",
       "reader.ngc");
+}
+
+TEST_F(Rs274, HandWrittenDataFileMatchesLinuxCnc) {
+  std::ifstream in(SWARF_TEST_DATA_DIR "/gcode/rounded_rectangle.ngc");
+  std::stringstream text;
+  text << in.rdbuf();
+  ASSERT_FALSE(text.str().empty());
+  expect_accepted_and_same_motion(text.str(), "rounded_rectangle.ngc");
 }
 
 }  // namespace
