@@ -384,7 +384,8 @@ class Builder {
     return in;
   }
 
-  // The GA on an instance, with start costs from where the tool is now.
+  // Seed 003 2.5: the GA plus local search on an instance, with start costs from where
+  // the tool is now.
   TwoEndsTour solve(const Layer& L, TwoEndsInstance& in) const {
     in.start_cost.clear();
     if (has_pos_) {
