@@ -21,7 +21,7 @@ constexpr std::size_t kLocalSearchStarts = 8;
 // Instances up to this size get or-opt chains of any length.
 constexpr std::size_t kLongChainsUpTo = 16;
 // Work budget of the kicks of the iterated local search, in units of n^3 (one descent).
-constexpr double kKickWork = 4e7;
+constexpr double kKickWork = 4e6;
 
 // Own mappings from the 64-bit engine (mt19937_64's sequence is fixed by the standard, the
 // std:: distributions are not), so tours are identical across standard libraries.

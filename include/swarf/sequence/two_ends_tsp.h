@@ -71,7 +71,7 @@ struct SequenceOptions {
   int elite = 2;             ///< best tours copied unchanged into the next generation
   bool local_search = true;  ///< 2-opt and or-opt with orientation flips after the GA
   /// Kicks of the iterated local search after the descent (fewer on large instances: at
-  /// most about 4e7 / n^3).
+  /// most about 4e6 / n^3).
   int kicks = 300;
   std::uint64_t seed = 1;
 };
