@@ -30,6 +30,8 @@ double seconds_since(Clock::time_point t0) {
 // Rapids stop this far above the layer they plunge into (the previous layer's floor is
 // clear there, or the stock top for the first layer).
 constexpr double kApproachMm = 1.0;
+// Largest side of the squares the exact part tops are kept on (up to 4 per cell side).
+constexpr double kTopSquareMm = 2.0;
 // Cell visits the true-cost refinement may spend per layer (some 5 ms) and in all.
 constexpr double kDryRunCellBudget = 2e6;
 constexpr double kDryRunTotalBudget = 1.5e7;
@@ -648,6 +650,9 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   vo.margin_mm = p.margin_mm;
   vo.top_margin_mm = p.top_margin_mm;
   vo.repair_open = p.repair_open_mesh;
+  // Part tops on squares of about 2 mm or less: the offset is then conservative by that
+  // much instead of by a whole stepover (more machinable cells near walls).
+  vo.top_subdivisions = std::clamp(static_cast<int>(std::ceil(p.stepover_mm / kTopSquareMm)), 1, 4);
   // Seed 003 3.1.1 without re-clamping the part: part and stock are turned by -angle so
   // that the grid's x axis runs along the wanted feed direction, and the toolpath is turned
   // back at the end. Cells outside the turned stock hold nothing to cut.
