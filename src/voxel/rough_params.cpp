@@ -1,5 +1,6 @@
 // Seed 003: strategy names, parameter validation and the orientation study (3.1.1).
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -56,7 +57,12 @@ Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams
     RoughParams q = p;
     q.zigzag_angle_deg = a;
     auto r = rough(part, q, ctx);
-    if (!r.ok()) return r.status().with_context("feed angle " + std::to_string(a) + " deg");
+    if (!r.ok()) {
+      if (angles_deg.size() == 1 && a == 0.0) return r.status();
+      char what[48];
+      std::snprintf(what, sizeof what, "feed angle %g deg", a);
+      return r.status().with_context(what);
+    }
     out.angles_deg.push_back(a);
     out.metrics.push_back(r->metrics);
     const bool better = out.metrics.size() == 1 ||
