@@ -19,11 +19,13 @@ Pocket load(const std::string& name) {
 
 Pocket scaled(const Pocket& p, double s) {
   Ring outer;
-  for (Vec2 q : p.outer()) outer.push_back(q * s);
+  for (Vec2 q : p.outer())
+    outer.push_back(q * s);
   std::vector<Ring> islands;
   for (std::size_t k = 1; k < p.region.rings.size(); ++k) {
     islands.push_back({});
-    for (Vec2 q : p.region.rings[k]) islands.back().push_back(q * s);
+    for (Vec2 q : p.region.rings[k])
+      islands.back().push_back(q * s);
   }
   return make_pocket(outer, islands, p.source).value();
 }
@@ -55,11 +57,11 @@ Outcome run(const Pocket& p, double tool_d, double stepover_mm) {
   o.sweep = testing::sweep_check(p.region, 0.5 * tool_d, o.result.toolpath,
                                  o.result.target_engagement_deg, 0.05, 0.2);
   const auto& s = o.sweep;
-  std::printf("  %s: gouge %.3f mm, residual %.2f mm2 (unreachable %.1f), cutting %.0f mm, "
-              "within20 %.1f %%, max eng %.0f deg, slot %.1f mm, pixel %.3f mm\n",
-              p.source.c_str(), s.max_gouge_mm, s.residual_mm2, s.unreachable_mm2,
-              s.cutting_length_mm, 100 * s.within_20pct, s.max_engagement_deg, s.slot_length_mm,
-              o.result.resolution_mm);
+  std::printf(
+      "  %s: gouge %.3f mm, residual %.2f mm2 (unreachable %.1f), cutting %.0f mm, "
+      "within20 %.1f %%, max eng %.0f deg, slot %.1f mm, pixel %.3f mm\n",
+      p.source.c_str(), s.max_gouge_mm, s.residual_mm2, s.unreachable_mm2, s.cutting_length_mm,
+      100 * s.within_20pct, s.max_engagement_deg, s.slot_length_mm, o.result.resolution_mm);
   return o;
 }
 

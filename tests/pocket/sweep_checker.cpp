@@ -46,7 +46,8 @@ struct Sample {
 // Points along the floor pass every `step` mm.
 std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
   double zmin = std::numeric_limits<double>::infinity();
-  for (const Move& m : tp.moves) zmin = std::min(zmin, m.end.z);
+  for (const Move& m : tp.moves)
+    zmin = std::min(zmin, m.end.z);
   std::vector<Sample> out;
   Vec3 at = tp.moves.empty() ? Vec3{} : tp.moves.front().end;
   for (const Move& m : tp.moves) {
@@ -67,7 +68,8 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
       for (int k = 1; k <= n; ++k) {
         const double a = a0 + sweep * k / n;
         const Vec2 tangent = Vec2{-std::sin(a), std::cos(a)} * (m.clockwise ? -1.0 : 1.0);
-        out.push_back({c + Vec2{std::cos(a), std::sin(a)} * r, tangent, std::abs(sweep) * r / n, entry});
+        out.push_back(
+            {c + Vec2{std::cos(a), std::sin(a)} * r, tangent, std::abs(sweep) * r / n, entry});
       }
       continue;
     }
@@ -83,12 +85,13 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
 
 }  // namespace
 
-SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path,
-                        double target_deg, double h, double tol) {
+SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path, double target_deg,
+                        double h, double tol) {
   SweepReport rep;
   Box2 box;
   for (const Ring& r : region.rings)
-    for (Vec2 p : r) box.add(p);
+    for (Vec2 p : r)
+      box.add(p);
   box = box.inflated(R + 2 * h);
   const int w = static_cast<int>(std::ceil(box.size().x / h)) + 1;
   const int ht = static_cast<int>(std::ceil(box.size().y / h)) + 1;
@@ -134,7 +137,8 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
         const int i = static_cast<int>(std::lround((q.x - box.min.x) / h));
         const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
-        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1) ++n;
+        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1)
+          ++n;
       }
       const double eng = n;
       if (eng > 2.0) {
@@ -160,8 +164,10 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
           const std::size_t q = static_cast<std::size_t>(j + dj) * w + (i + di);
           if (cell[q] == 0 || wall_d[q] < R) edge = true;
         }
-      if (edge) stamp(centre(i, j), reach, 0, 1);
-      else reach[k] = 1;
+      if (edge)
+        stamp(centre(i, j), reach, 0, 1);
+      else
+        reach[k] = 1;
     }
   for (std::size_t k = 0; k < cell.size(); ++k) {
     if (cell[k] == 0) continue;
