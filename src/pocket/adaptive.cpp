@@ -81,7 +81,9 @@ double angle_of(const Model& m, int px, double len) {
 
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
-void resimulate(const Model& m, const Entry& e, const LinkedPath& lp, AdaptiveResult& res) {
+void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
+                AdaptiveResult& res) {
+  const Entry& e = entries.front();
   pocket::PixelStock stock = pocket::fresh_stock(m);
   CutMap& map = res.cut_map;
   map.origin = m.grid.origin;
@@ -101,7 +103,9 @@ void resimulate(const Model& m, const Entry& e, const LinkedPath& lp, AdaptiveRe
     const Vec2 a = lp.pts[k], b = lp.pts[k + 1];
     rec.tag = static_cast<std::uint32_t>(2 + res.steps.size() + 1);
     int removed = 0;
-    if (lp.jump[k]) {
+    if (lp.jump[k] && lp.entry[k] >= 0) {
+      pocket::cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])], record, &rec);
+    } else if (lp.jump[k]) {
       removed = stock.stamp(b, record, &rec);
       if (stock.gouges(b)) ++res.gouge_steps;
     } else {
@@ -209,7 +213,9 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   auto model = pocket::make_model(pocket, tool, params);
   if (!model) return model.status();
   const Model& m = model.value();
-  auto entries = pocket::find_entries(m, params, params.plunge_candidates);
+  // Candidates for the start, and spare entries for parts of the pocket behind necks
+  // narrower than the tool.
+  auto entries = pocket::find_entries(m, params, std::max(params.plunge_candidates, 16));
   if (!entries) return entries.status();
   pocket::LinkCosts costs;
   costs.feed_mm_min = params.feed_mm_min;
@@ -221,20 +227,28 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   std::size_t best = 0;
   double best_time = 1e300;
   std::vector<LinkedPath> paths;
-  for (std::size_t k = 0; k < entries->size(); ++k) {
-    ctx.report("adaptive pocket", static_cast<double>(k) / entries->size());
+  std::vector<std::vector<Entry>> orders;
+  const std::size_t candidates =
+      std::min(entries->size(), static_cast<std::size_t>(params.plunge_candidates));
+  for (std::size_t k = 0; k < candidates; ++k) {
+    ctx.report("adaptive pocket", static_cast<double>(k) / static_cast<double>(candidates));
+    std::vector<Entry> order{(*entries)[k]};
+    for (std::size_t q = 0; q < entries->size(); ++q)
+      if (q != k) order.push_back((*entries)[q]);
     pocket::PixelStock stock = pocket::fresh_stock(m);
-    pocket::cut_entry(stock, m, (*entries)[k]);
-    auto raw = pocket::generate_raw_path(m, stock, (*entries)[k], ctx);
+    pocket::cut_entry(stock, m, order.front());
+    auto raw = pocket::generate_raw_path(m, stock, order, ctx);
     if (!raw) return raw.status();
-    paths.push_back(pocket::postprocess(m, (*entries)[k], raw.value(), costs));
+    paths.push_back(pocket::postprocess(m, order, raw.value(), costs));
+    orders.push_back(std::move(order));
     const double t = path_time_s(paths.back(), params);
     if (t < best_time) {
       best_time = t;
       best = k;
     }
   }
-  const Entry& e = (*entries)[best];
+  const std::vector<Entry>& order = orders[best];
+  const Entry& e = order.front();
   const LinkedPath& lp = paths[best];
   AdaptiveResult res;
   res.resolution_mm = m.h;
@@ -245,7 +259,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.helix_radius_mm = e.helix_radius_mm;
   res.trochoid_groups = lp.trochoid_groups;
   res.boundary_groups = lp.boundary_groups;
-  resimulate(m, e, lp, res);
+  resimulate(m, order, lp, res);
 
   // Output simplification: runs between kind changes and jumps, Douglas-Peucker.
   const double tol = params.simplify_tolerance_mm > 0.0 ? params.simplify_tolerance_mm : 0.25 * m.h;
@@ -288,6 +302,14 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
       const Vec3 end = to_vec3(lp.pts[b], z);
+      if (lp.jump[a] && lp.entry[a] >= 0) {
+        ++retracts;
+        tp.moves.push_back(
+            make_move(MoveKind::kRapid, to_vec3(lp.pts[a], params.clearance_z_mm), 0, false));
+        const Entry& ne = order[static_cast<std::size_t>(lp.entry[a])];
+        entry_moves(tp, ne, params, z_prev + 1.0, z);
+        continue;
+      }
       if (lp.jump[a]) {
         ++retracts;
         tp.moves.push_back(

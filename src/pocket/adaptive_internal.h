@@ -60,9 +60,14 @@ struct RawPath {
   std::vector<StepKind> kind;
   /// The segment is a resume after a finished boundary round: not travelled, linked later.
   std::vector<bool> jump;
+  /// For a jump: the index in `entries` of a new helix/ramp entry made there, else -1.
+  std::vector<int> entry;
 };
-Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock, const Entry& entry,
-                                  const Context& ctx);
+/// `entries`: the first is where the path starts; the others are used, in order, for parts
+/// of the pocket the tool cannot reach from the cleared area (beyond a neck narrower than
+/// the tool) once nothing else is left.
+Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock,
+                                  const std::vector<Entry>& entries, const Context& ctx);
 
 /// The linked path: points and per segment its kind; `jump[i]` marks a segment travelled
 /// by retracting, moving at the clearance plane and coming down again.
@@ -70,6 +75,7 @@ struct LinkedPath {
   std::vector<Vec2> pts;
   std::vector<StepKind> kind;
   std::vector<bool> jump;
+  std::vector<int> entry;  ///< per segment: a jump that enters anew at entries[i], else -1
   int trochoid_groups = 0;
   int boundary_groups = 0;
 };
@@ -79,7 +85,7 @@ struct LinkCosts {
   double lift_mm = 10.0;  ///< up and down distance of one retract
   int smoothing_iterations = 2;
 };
-LinkedPath postprocess(const Model& model, const Entry& entry, const RawPath& raw,
+LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
 
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included.

@@ -210,8 +210,11 @@ bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& d
 
 }  // namespace
 
-Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, const Entry& entry,
-                                  const Context& ctx) {
+Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
+                                  const std::vector<Entry>& entries, const Context& ctx) {
+  const Entry& entry = entries.front();
+  std::vector<bool> used(entries.size(), false);
+  used[0] = true;
   RawPath raw;
   Chooser chooser(m, stock);
   Vec2 pos = entry.start;
@@ -256,6 +259,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, const Entry
       raw.eng.push_back(removed);
       raw.kind.push_back(kind);
       raw.jump.push_back(false);
+      raw.entry.push_back(-1);
       raw.pts.push_back(c.p);
       dir = normalized(c.p - pos);
       pos = c.p;
@@ -269,18 +273,36 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, const Entry
       raw.eng.pop_back();
       raw.kind.pop_back();
       raw.jump.pop_back();
+      raw.entry.pop_back();
       raw.pts.pop_back();
     }
     pos = raw.pts.back();
     if (raw.eng.size() >= max_steps) break;
     if (resumed && raw.eng.size() <= before_session) stock.drop_pixel(last_i, last_j);
     Vec2 at, d;
-    if (!find_resume(m, stock, pos, at, d, last_i, last_j)) break;
-    resumed = true;
+    int new_entry = -1;
+    if (!find_resume(m, stock, pos, at, d, last_i, last_j)) {
+      // Nothing reachable from the cleared area: enter anew where the stock is untouched
+      // (seed 000 4.1's several plunge holes), at the widest unused medial-axis point.
+      const double full = kPi * m.radius_mm * m.radius_mm / (m.h * m.h);
+      for (std::size_t k = 1; k < entries.size() && new_entry < 0; ++k)
+        if (!used[k] && stock.material_in_disk(entries[k].centre, m.radius_mm) > 0.9 * full)
+          new_entry = static_cast<int>(k);
+      if (new_entry < 0) break;
+      used[static_cast<std::size_t>(new_entry)] = true;
+      const Entry& e = entries[static_cast<std::size_t>(new_entry)];
+      cut_entry(stock, m, e);
+      at = e.start;
+      d = {std::cos(e.start_angle_rad), std::sin(e.start_angle_rad)};
+      resumed = false;
+    } else {
+      resumed = true;
+    }
     before_session = raw.eng.size();
     raw.eng.push_back(0);
     raw.kind.push_back(StepKind::kLink);
     raw.jump.push_back(true);
+    raw.entry.push_back(new_entry);
     raw.pts.push_back(at);
     pos = at;
     dir = d;

@@ -228,8 +228,9 @@ void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size
     if (kept[k - first]) keep.push_back(k);
 }
 
-LinkedPath postprocess(const Model& m, const Entry& entry, const RawPath& raw,
+LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs) {
+  const Entry& entry = entries.front();
   LinkedPath out;
   std::vector<Region> regions = segment_regions(m, raw);
   const Groups groups = group_regions(m, raw, regions);
@@ -250,6 +251,7 @@ LinkedPath postprocess(const Model& m, const Entry& entry, const RawPath& raw,
       out.pts.push_back(raw.pts[k + 1]);
       out.kind.push_back(link ? StepKind::kLink : raw.kind[k]);
       out.jump.push_back(false);
+      out.entry.push_back(-1);
     }
   };
   std::vector<std::pair<std::size_t, std::size_t>> joins;  // out point index ranges to smooth
@@ -266,12 +268,26 @@ LinkedPath postprocess(const Model& m, const Entry& entry, const RawPath& raw,
     bool has_jump = false;
     for (std::size_t q = r.first; q < r.last; ++q)
       has_jump = has_jump || raw.jump[q];
+    // A new entry: lift, enter there, then the raw moves to the next cut.
+    std::size_t fresh = r.last;
+    for (std::size_t q = r.first; q < r.last; ++q)
+      if (raw.jump[q] && raw.entry[q] >= 0) fresh = q;
+    if (fresh < r.last) {
+      cut_entry(stock, m, entries[static_cast<std::size_t>(raw.entry[fresh])]);
+      out.pts.push_back(raw.pts[fresh + 1]);
+      out.kind.push_back(StepKind::kLink);
+      out.jump.push_back(true);
+      out.entry.push_back(raw.entry[fresh]);
+      append_raw(fresh + 1, r.last, true);
+      continue;
+    }
     std::vector<Vec2> link;
     if (try_straight(m, stock, a, b, link)) {
       for (Vec2 p : link) {
         out.pts.push_back(p);
         out.kind.push_back(StepKind::kLink);
         out.jump.push_back(false);
+        out.entry.push_back(-1);
       }
       joins.push_back({before, out.pts.size() - 1});
       continue;
@@ -295,6 +311,7 @@ LinkedPath postprocess(const Model& m, const Entry& entry, const RawPath& raw,
       out.pts.push_back(b);
       out.kind.push_back(StepKind::kLink);
       out.jump.push_back(true);
+      out.entry.push_back(-1);
     } else {
       std::vector<Vec2> pts;
       q0 = a;
@@ -306,6 +323,7 @@ LinkedPath postprocess(const Model& m, const Entry& entry, const RawPath& raw,
         out.pts.push_back(p);
         out.kind.push_back(StepKind::kLink);
         out.jump.push_back(false);
+        out.entry.push_back(-1);
       }
       joins.push_back({before, out.pts.size() - 1});
     }

@@ -204,6 +204,16 @@ Vec2 far_away(Vec2 c, double r_mm) {
 
 bool PixelStock::gouges(Vec2 centre) const {
   bool gouge = false;
+  if (clearance_sq_ != nullptr) {
+    // Decided by the clearance of the nearest pixel when it is more than a pixel from R.
+    const Vec2 q = grid_.to_px(centre);
+    const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+    if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
+      const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+      if (c - 0.71 > radius_px_ + 1.0) return false;
+      if (c + 0.71 < radius_px_ - 1.0) return true;
+    }
+  }
   const bool inside =
       crescent_rows(far_away(centre, tool_radius_mm()), centre, [&](int j, int x0, int x1) {
         gouge = forbidden_.count(j, x0, x1) > 0;
