@@ -31,10 +31,14 @@ Pocket star_pocket() {
 
 Pocket pocket_by_index(int i) {
   switch (i) {
-    case 0: return load("l_pocket_islands.json");
-    case 1: return load("kirimoto_pocket.json");
-    case 2: return star_pocket();
-    default: return load("pcbvicebar_slice.json");
+    case 0:
+      return load("l_pocket_islands.json");
+    case 1:
+      return load("kirimoto_pocket.json");
+    case 2:
+      return star_pocket();
+    default:
+      return load("pcbvicebar_slice.json");
   }
 }
 
