@@ -1,0 +1,73 @@
+// The top of a tri-slice model inflated by a ball, evaluated point by point: the fast road
+// to scanning paths (seed 001 section 3.1) without building whole inflated polygons.
+//
+// For a scan line y = y_i, the paper inflates the zx slice i by Eq. (1) and reads the ball
+// centre off the top of the inflated polygon. The top of offset(P_j, rho) at x is
+//   max over points (x', z') of P_j with |x' - x| <= rho of z' + sqrt(rho^2 - (x' - x)^2),
+// i.e. a disc of radius rho dropped onto slice j in its own plane; the top of the union is the
+// maximum over j. So the scan-line result of Eq. (1) is exactly: the highest ball centre over
+// (x, y_i) such that, for every slice j, the disc of radius sqrt(r^2 - (y_i - y_j)^2) clears
+// P_j. That is a 2D drop against the upward-facing edges of each slice, nothing else, with no
+// polygon union at all. Written with the distance y - y_j instead of (i - j) ds it holds at
+// any y, and for the family normal to x as well (with x - x_k): the same query on the yz
+// family gives that family's inflated top at any point. The model's top is the higher of the
+// two families' answers (superposition, section 2.1): the yz family holds walls that are
+// parallel to the zx planes and vice versa, so together they bound the error of offset.h with
+// theta >= 45 degrees everywhere (a vertical wall is crossed by one family at >= 45 degrees).
+//
+// Per slice the upward edges are bucketed along the line in bins that carry their highest z;
+// blocks of 16 slices carry the highest z of their bins. A query visits slices nearest first
+// and skips any block, slice or bin whose highest z + rho cannot beat the best centre so far.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarf/core/vec.h"
+#include "swarf/trislice/model.h"
+
+namespace swarf {
+
+class SliceEnvelope {
+ public:
+  /// Family must be normal to x or y. `bin_mm`: bin width along the slices.
+  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 1.0);
+
+  /// Highest centre height of a ball of radius r_mm over p that clears every slice of the
+  /// family (Eq. (1) evaluated at p), or `at_least` when no slice rises above it.
+  double centre_height(Vec2 p, double r_mm, double at_least) const;
+
+  std::size_t segment_count() const { return seg_.size(); }
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Seg {
+    double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
+  };
+  Axis axis_ = Axis::kY;
+  double first_ = 0.0, pitch_ = 1.0;
+  std::size_t n_ = 0;  ///< slices
+  double smin_ = 0.0, bin_ = 1.0;
+  int nb_ = 0;
+  std::vector<Seg> seg_;
+  std::vector<std::uint32_t> start_;  ///< CSR over (slice, bin)
+  std::vector<std::uint32_t> items_;
+  std::vector<double> binmax_;    ///< per (slice, bin)
+  std::vector<double> blockmax_;  ///< per (block of kBlock slices, bin)
+  static constexpr std::size_t kBlock = 16;
+};
+
+/// Both vertical families of a model, queried together.
+class TriSliceTop {
+ public:
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 1.0);
+  /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
+  /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
+  double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY) const;
+  const SliceEnvelope& family(Axis a) const { return a == Axis::kX ? x_ : y_; }
+
+ private:
+  SliceEnvelope x_, y_;
+};
+
+}  // namespace swarf
