@@ -2,10 +2,14 @@
 #include "swarf/trislice/envelope.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 namespace swarf {
+#ifdef SWARF_ENV_COUNT
+std::atomic<long> g_blocks{0}, g_bins{0}, g_segs{0};
+#endif
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -35,13 +39,20 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family, double bin_mm) {
         Seg s{};
         if (family.axis == Axis::kX) {  // (u, v) = (y, z)
           nz = -du;
-          s = {a.x, a.y, b.x, b.y};
+          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0};
         } else {  // kY: (u, v) = (z, x)
           nz = dv;
-          s = {a.y, a.x, b.y, b.x};
+          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0};
         }
         if (nz < -1e-12 * std::hypot(du, dv)) continue;
-        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0};
+        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0};
+        // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
+        const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
+        if (ds_ > 1e-12 && len > 0.0) {
+          s.ns = -dz_ / len;
+          s.nz = ds_ / len;
+          s.slope = dz_ / ds_;
+        }  // else vertical (nz stays 0): only its end points can be touched
         smin = std::min(smin, s.s0);
         smax = std::max(smax, s.s1);
         per[j].push_back(s);
@@ -74,6 +85,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family, double bin_mm) {
     for (const Seg& s : per[j]) {
       const auto id = static_cast<std::uint32_t>(e.seg_.size());
       e.seg_.push_back(s);
+      e.slice_of_.push_back(static_cast<std::uint32_t>(j));
       for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.items_[fill[c]++] = id;
@@ -96,7 +108,7 @@ std::size_t SliceEnvelope::memory_bytes() const {
          (binmax_.size() + blockmax_.size()) * sizeof(double);
 }
 
-double SliceEnvelope::centre_height(Vec2 p, double r, double best) const {
+double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
   if (n_ == 0 || !(r > 0.0)) return best;
   const double q = axis_ == Axis::kX ? p.x : p.y;  // across the slices
   const double s = axis_ == Axis::kX ? p.y : p.x;  // along them
@@ -115,7 +127,42 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best) const {
     b1 = std::clamp(static_cast<int>(std::floor((s + rho - smin_) / bin_)), 0, nb_ - 1);
     return true;
   };
+  // Can a disc of radius sqrt(rho2) centred at s, resting on the top of bin b's box (height
+  // top), put its centre above `best`? Squared, so no square root per bin.
+  auto can_beat = [&](int b, double top, double rho2) {
+    const double lo = smin_ + bin_ * b, hi = lo + bin_;
+    const double dx = std::max({lo - s, 0.0, s - hi});
+    const double room = rho2 - dx * dx;
+    if (room < 0.0) return false;
+    const double need = best - top;
+    return need < 0.0 || room > need * need;
+  };
   auto level = [&](long j) { return first_ + static_cast<double>(j) * pitch_; };
+  std::uint32_t best_id = kNoHint;
+  // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
+  // where the upward normal points at the centre).
+  auto drop = [&](std::uint32_t id, double rho, double rho2) {
+    const Seg& g = seg_[id];
+    double c = -kInf;
+    const double d0 = s - g.s0, d1 = s - g.s1;
+    if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
+    if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
+    if (g.nz > 0.0) {
+      const double qs = s - rho * g.ns;
+      if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
+    }
+    if (c > best) {
+      best = c;
+      best_id = id;
+    }
+  };
+  // Scan-line coherence: the segment that held the previous point up usually holds this one
+  // up too (or nearly); starting from its height lets the bounds below prune from the start.
+  if (hint != nullptr && *hint < seg_.size()) {
+    const double dq = q - level(static_cast<long>(slice_of_[*hint]));
+    const double rho2 = r * r - dq * dq;
+    if (rho2 >= 0.0) drop(*hint, std::sqrt(rho2), rho2);
+  }
   auto visit_block = [&](long blk) {
     const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
     const double l0 = level(j0), l1 = level(j1);
@@ -123,34 +170,28 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best) const {
     const double rho_max = std::sqrt(std::max(0.0, r * r - dmin * dmin));
     int b0 = 0, b1 = -1;
     if (!bins(rho_max, b0, b1)) return;
-    double bound = -kInf;
-    for (int b = b0; b <= b1; ++b) bound = std::max(bound, blockmax_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)]);
-    if (bound + rho_max <= best) return;
+    // Bins of this block that can still beat the best centre; only those are opened below.
+    int pass[4096];
+    int npass = 0;
+    for (int b = b0; b <= b1 && npass < 4096; ++b)
+      if (can_beat(b, blockmax_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)],
+                   rho_max * rho_max))
+        pass[npass++] = b;
+#ifdef SWARF_ENV_COUNT
+    g_blocks++; g_bins += npass;
+#endif
+    if (npass == 0) return;
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
       const double rho2 = r * r - dq * dq;
       if (rho2 < 0.0) continue;
       const double rho = std::sqrt(rho2);  // seed 001 Eq. (1), with (i - j) ds -> y - y_j
-      int c0 = 0, c1 = -1;
-      if (!bins(rho, c0, c1)) continue;
-      for (int b = c0; b <= c1; ++b) {
+      for (int m = 0; m < npass; ++m) {
+        const int b = pass[m];
         const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
-        if (binmax_[cell] + rho <= best) continue;
+        if (!can_beat(b, binmax_[cell], rho2)) continue;
         for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
-          const Seg& g = seg_[items_[k]];
-          // A disc of radius rho dropped at s onto the segment: end points, then the interior
-          // (contact where the upward normal points at the centre).
-          const double d0 = s - g.s0, d1 = s - g.s1;
-          if (std::fabs(d0) <= rho) best = std::max(best, g.z0 + std::sqrt(rho2 - d0 * d0));
-          if (std::fabs(d1) <= rho) best = std::max(best, g.z1 + std::sqrt(rho2 - d1 * d1));
-          const double dsg = g.s1 - g.s0;
-          if (dsg > 0.0) {
-            const double dz = g.z1 - g.z0;
-            const double len = std::hypot(dsg, dz);
-            const double qs = s + rho * dz / len;
-            if (qs >= g.s0 && qs <= g.s1)
-              best = std::max(best, g.z0 + (qs - g.s0) / dsg * dz + rho * dsg / len);
-          }
+          drop(items_[k], rho, rho2);
         }
       }
     }
@@ -160,6 +201,7 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best) const {
     if (bc - k >= blo) visit_block(bc - k);
     if (bc + k <= bhi) visit_block(bc + k);
   }
+  if (hint != nullptr && best_id != kNoHint) *hint = best_id;
   return best;
 }
 
@@ -170,10 +212,12 @@ TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm) {
   return t;
 }
 
-double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary) const {
+double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* hint) const {
   const SliceEnvelope& a = primary == Axis::kX ? x_ : y_;
   const SliceEnvelope& b = primary == Axis::kX ? y_ : x_;
-  return b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf));
+  std::uint32_t* ha = hint != nullptr ? &hint->primary : nullptr;
+  std::uint32_t* hb = hint != nullptr ? &hint->secondary : nullptr;
+  return b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb);
 }
 
 }  // namespace swarf

@@ -31,11 +31,15 @@ namespace swarf {
 class SliceEnvelope {
  public:
   /// Family must be normal to x or y. `bin_mm`: bin width along the slices.
-  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 1.0);
+  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 0.25);
 
   /// Highest centre height of a ball of radius r_mm over p that clears every slice of the
   /// family (Eq. (1) evaluated at p), or `at_least` when no slice rises above it.
-  double centre_height(Vec2 p, double r_mm, double at_least) const;
+  /// `hint` (optional) carries the segment that decided the previous query of a scan line in
+  /// and out; it only speeds the query up, the answer does not depend on it.
+  double centre_height(Vec2 p, double r_mm, double at_least,
+                       std::uint32_t* hint = nullptr) const;
+  static constexpr std::uint32_t kNoHint = 0xffffffffu;
 
   std::size_t segment_count() const { return seg_.size(); }
   std::size_t memory_bytes() const;
@@ -43,6 +47,7 @@ class SliceEnvelope {
  private:
   struct Seg {
     double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
+    double ns, nz, slope;   ///< upward unit normal; dz/ds (nz == 0 marks a vertical edge)
   };
   Axis axis_ = Axis::kY;
   double first_ = 0.0, pitch_ = 1.0;
@@ -50,6 +55,7 @@ class SliceEnvelope {
   double smin_ = 0.0, bin_ = 1.0;
   int nb_ = 0;
   std::vector<Seg> seg_;
+  std::vector<std::uint32_t> slice_of_;  ///< slice index of each segment
   std::vector<std::uint32_t> start_;  ///< CSR over (slice, bin)
   std::vector<std::uint32_t> items_;
   std::vector<double> binmax_;    ///< per (slice, bin)
@@ -57,13 +63,20 @@ class SliceEnvelope {
   static constexpr std::size_t kBlock = 16;
 };
 
+/// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
+struct ScanHint {
+  std::uint32_t primary = SliceEnvelope::kNoHint;
+  std::uint32_t secondary = SliceEnvelope::kNoHint;
+};
+
 /// Both vertical families of a model, queried together.
 class TriSliceTop {
  public:
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 1.0);
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.25);
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
-  double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY) const;
+  double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,
+                       ScanHint* hint = nullptr) const;
   const SliceEnvelope& family(Axis a) const { return a == Axis::kX ? x_ : y_; }
 
  private:
