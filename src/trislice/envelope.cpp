@@ -16,7 +16,24 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-SliceEnvelope SliceEnvelope::build(const SliceFamily& family, double bin_mm) {
+SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, int stride) {
+  SliceFamily strided;
+  if (stride > 1) {
+    // Keep the slices on the coarser lattice (level index divisible by stride), so coarse
+    // and fine envelopes of one model share their slices.
+    strided.axis = family_in.axis;
+    strided.pitch_mm = family_in.pitch_mm * stride;
+    const long base = std::lround(family_in.first_level / family_in.pitch_mm);
+    bool first = true;
+    for (std::size_t j = 0; j < family_in.size(); ++j) {
+      const long k = base + static_cast<long>(j);
+      if (((k % stride) + stride) % stride != 0) continue;
+      if (first) strided.first_level = family_in.level(j);
+      first = false;
+      strided.slices.push_back(family_in.slices[j]);
+    }
+  }
+  const SliceFamily& family = stride > 1 ? strided : family_in;
   SliceEnvelope e;
   e.axis_ = family.axis;
   e.first_ = family.first_level;
@@ -205,10 +222,10 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   return best;
 }
 
-TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm) {
+TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride) {
   TriSliceTop t;
-  t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm);
-  t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm);
+  t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
+  t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
   return t;
 }
 

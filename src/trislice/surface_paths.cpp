@@ -121,6 +121,7 @@ Status validate(const RoughingParams& p) {
   if (!(p.stepdown_mm > 0.0)) return bad_parameter("roughing stepdown must be positive");
   if (!(p.stepover_mm > 0.0)) return bad_parameter("roughing stepover must be positive");
   if (!(p.margin_mm >= 0.0)) return bad_parameter("roughing margin must be >= 0 mm");
+  if (!(p.min_pitch_mm >= 0.0)) return bad_parameter("roughing min pitch must be >= 0 mm");
   return {};
 }
 
@@ -174,6 +175,14 @@ Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& t
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   auto lines = scan_cl_lines(top, model.bounds, tool.radius(), p.stock_to_leave_mm, p, ctx);
   if (!lines.ok()) return lines.status();
+  return scan_finishing_from_lines(model, top, tool, p, std::move(lines).value());
+}
+
+Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
+                                           const Tool& tool, const ScanParams& p,
+                                           std::vector<std::vector<Vec3>> lines) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  SWARF_RETURN_IF_ERROR(validate(p));
   Toolpath tp = new_toolpath(tool, "tri-slice scan finishing", clearance_of(p.clearance_z_mm, model, -kInf));
   const double R = tool.radius() + p.stock_to_leave_mm;
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
@@ -182,7 +191,7 @@ Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& t
     const double c = top.centre_height(xy, R, primary);
     return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
   };
-  tp = lines_to_toolpath(std::move(lines).value(), p, kInf, std::move(tp), cl_at);
+  tp = lines_to_toolpath(std::move(lines), p, kInf, std::move(tp), cl_at);
   if (tp.empty()) return Status{Error::kEmptyResult, "scan finishing: no CL points"};
   return tp;
 }
@@ -198,14 +207,18 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
   Toolpath tp = new_toolpath(tool, "tri-slice scan roughing", clearance_of(p.clearance_z_mm, model, stock_top));
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
   const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
+  const int stride = std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
+  TriSliceTop coarse;
+  if (stride > 1) coarse = TriSliceTop::build(model, 0.25, stride);
+  const TriSliceTop& use = stride > 1 ? coarse : top;
   // Table 1: successive inflations, the deepest layer last.
   for (int k = rough.layers - 1; k >= 0; --k) {
     const double extra = rough.margin_mm + k * rough.stepdown_mm;
-    auto lines = scan_cl_lines(top, model.bounds, tool.radius(), extra, p, ctx);
+    auto lines = scan_cl_lines(use, model.bounds, tool.radius(), extra, p, ctx);
     if (!lines.ok()) return lines.status();
     const double R = tool.radius() + extra;
     auto cl_at = [&](Vec2 xy) {
-      const double c = top.centre_height(xy, R, primary);
+      const double c = use.centre_height(xy, R, primary);
       return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
     };
     tp = lines_to_toolpath(std::move(lines).value(), p, stock_top, std::move(tp), cl_at);

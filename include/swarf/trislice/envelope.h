@@ -30,8 +30,9 @@ namespace swarf {
 
 class SliceEnvelope {
  public:
-  /// Family must be normal to x or y. `bin_mm`: bin width along the slices.
-  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 0.25);
+  /// Family must be normal to x or y. `bin_mm`: bin width along the slices. `stride` > 1
+  /// reads every stride-th slice only (a coarser model for roughing).
+  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 0.25, int stride = 1);
 
   /// Highest centre height of a ball of radius r_mm over p that clears every slice of the
   /// family (Eq. (1) evaluated at p), or `at_least` when no slice rises above it.
@@ -72,7 +73,7 @@ struct ScanHint {
 /// Both vertical families of a model, queried together.
 class TriSliceTop {
  public:
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.25);
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.25, int stride = 1);
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,

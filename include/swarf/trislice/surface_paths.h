@@ -40,6 +40,9 @@ struct RoughingParams {
   double stepover_mm = 2.0;  ///< radial depth of cut
   double margin_mm = 0.1;    ///< stock left for finishing
   double stock_top_mm = kAuto;  ///< default: the model top
+  /// Roughing reads every k-th slice so that its pitch is at least this (its error, tens of
+  /// micrometres at 0.125 mm, is far inside the margin); 0 = every slice.
+  double min_pitch_mm = 0.125;
 };
 
 struct ContourParams {
@@ -71,6 +74,12 @@ Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, con
 Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& top,
                                 const Tool& tool, const ScanParams& params,
                                 const Context& ctx = default_context());
+
+/// The finishing toolpath from CL lines already computed by scan_cl_lines (at the params'
+/// stock to leave), so a caller that also wants the raw CL points computes them once.
+Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
+                                           const Tool& tool, const ScanParams& params,
+                                           std::vector<std::vector<Vec3>> lines);
 
 /// Roughing scan per Table 1 (its stepover replaces params.stepover_mm).
 Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top,
