@@ -19,7 +19,8 @@ Result<OperationOutput> run_dropcut(const OperationInput& in) {
   if (!stl.ok()) return stl.status();
   const Tool& tool = *in.tool;
   const std::string dir = p["direction"].get<std::string>();
-  if (dir != "x" && dir != "y") return bad_parameter("--direction must be x or y, not \"" + dir + "\"");
+  if (dir != "x" && dir != "y")
+    return bad_parameter("--direction must be x or y, not \"" + dir + "\"");
   const auto t0 = std::chrono::steady_clock::now();
   auto dc = DropCutter::build(stl->mesh, tool);
   if (!dc.ok()) return dc.status().with_context(in.input_path);
@@ -60,28 +61,29 @@ Result<OperationOutput> run_dropcut(const OperationInput& in) {
     line = simplify_polyline(line, p["tolerance"].get<double>());
     tp.rapid_to({line.front().x, line.front().y, tp.clearance_z_mm});
     tp.plunge_to(line.front().z, plunge);
-    for (std::size_t k = 1; k < line.size(); ++k) tp.feed_to(line[k], feed);
+    for (std::size_t k = 1; k < line.size(); ++k)
+      tp.feed_to(line[k], feed);
     tp.retract();
   }
   out.toolpaths.push_back(std::move(tp));
   return out;
 }
 
-const OperationRegistrar kRegister{Operation{
-    "dropcut",
-    "exact drop-cutter raster over a mesh (ball, flat or bull-nose): the CL reference",
-    "PART.stl",
-    true,
-    true,
-    {
-        {"direction", ParamType::kString, "x", "lines along x or y"},
-        {"stepover", ParamType::kNumber, 0.25, "distance between lines, mm"},
-        {"sampling", ParamType::kNumber, 0.05, "CL point spacing along a line, mm"},
-        {"tolerance", ParamType::kNumber, 0.001, "path simplification tolerance, mm"},
-        {"feed", ParamType::kNumber, 1000.0, "cutting feed, mm/min"},
-        {"plunge_feed", ParamType::kNumber, 300.0, "plunge feed, mm/min"},
-    },
-    run_dropcut}};
+const OperationRegistrar kRegister{
+    Operation{"dropcut",
+              "exact drop-cutter raster over a mesh (ball, flat or bull-nose): the CL reference",
+              "PART.stl",
+              true,
+              true,
+              {
+                  {"direction", ParamType::kString, "x", "lines along x or y"},
+                  {"stepover", ParamType::kNumber, 0.25, "distance between lines, mm"},
+                  {"sampling", ParamType::kNumber, 0.05, "CL point spacing along a line, mm"},
+                  {"tolerance", ParamType::kNumber, 0.001, "path simplification tolerance, mm"},
+                  {"feed", ParamType::kNumber, 1000.0, "cutting feed, mm/min"},
+                  {"plunge_feed", ParamType::kNumber, 300.0, "plunge feed, mm/min"},
+              },
+              run_dropcut}};
 
 }  // namespace
 }  // namespace swarf::cli

@@ -34,7 +34,8 @@ Result<OperationOutput> run_rest(const OperationInput& in) {
   if (!rest.ok()) return rest.status().with_context(in.input_path);
   const ThicknessMap map = thickness_map(*rest, pitch);
   OperationOutput out;
-  out.summary["rest_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.summary["rest_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.summary["pitch_mm"] = pitch;
   out.summary["max_thickness_mm"] = map.max();
   std::size_t cells = 0;

@@ -23,7 +23,8 @@ std::string cl_csv(const std::vector<std::vector<Vec3>>& lines) {
   os.precision(10);
   os << "line,x,y,z\n";
   for (std::size_t i = 0; i < lines.size(); ++i)
-    for (const Vec3& p : lines[i]) os << i << ',' << p.x << ',' << p.y << ',' << p.z << '\n';
+    for (const Vec3& p : lines[i])
+      os << i << ',' << p.x << ',' << p.y << ',' << p.z << '\n';
   return os.str();
 }
 
@@ -37,20 +38,22 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   const std::string dir = p["direction"].get<std::string>();
   if (pattern != "scan" && pattern != "contour")
     return bad_parameter("--pattern must be scan or contour, not \"" + pattern + "\"");
-  if (dir != "x" && dir != "y") return bad_parameter("--direction must be x or y, not \"" + dir + "\"");
+  if (dir != "x" && dir != "y")
+    return bad_parameter("--direction must be x or y, not \"" + dir + "\"");
   const double pitch = p["pitch"].get<double>();
 
   OperationOutput out;
   const auto t0 = std::chrono::steady_clock::now();
   // Scanning reads the x and y families, waterlines the z family: slice only what is used.
-  const std::array<bool, 3> families =
-      pattern == "scan" ? std::array<bool, 3>{true, true, false} : std::array<bool, 3>{false, false, true};
-  auto model = build_trislice(stl->mesh, pitch, families, {}, ctx);
+  const std::array<bool, 3> families = pattern == "scan" ? std::array<bool, 3>{true, true, false}
+                                                         : std::array<bool, 3>{false, false, true};
+  auto model = build_trislice_families(stl->mesh, pitch, families, {}, ctx);
   if (!model.ok()) return model.status().with_context(in.input_path);
   out.summary["model_s"] = seconds_since(t0);
   out.summary["pitch_mm"] = pitch;
   std::size_t slices = 0;
-  for (const SliceFamily& f : model->families) slices += f.size();
+  for (const SliceFamily& f : model->families)
+    slices += f.size();
   out.summary["slices"] = slices;
 
   const double feed = p["feed"].get<double>(), plunge = p["plunge_feed"].get<double>();
@@ -100,7 +103,8 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   if (!lines.ok()) return lines.status().with_context(in.input_path);
   std::string csv = cl_csv(*lines);
   std::size_t n = 0;
-  for (const auto& l : *lines) n += l.size();
+  for (const auto& l : *lines)
+    n += l.size();
   auto fin = scan_finishing_from_lines(*model, top, tool, sp, std::move(lines).value());
   if (!fin.ok()) return fin.status().with_context(in.input_path);
   out.summary["finishing_s"] = seconds_since(t2);

@@ -22,7 +22,8 @@ double profile_height(const CutterShape& c, double d) {
   const double flat = c.radius_mm - c.corner_radius_mm;
   if (d <= flat) return 0.0;
   const double e = std::min(d - flat, c.corner_radius_mm);
-  return c.corner_radius_mm - std::sqrt(std::max(0.0, c.corner_radius_mm * c.corner_radius_mm - e * e));
+  return c.corner_radius_mm -
+         std::sqrt(std::max(0.0, c.corner_radius_mm * c.corner_radius_mm - e * e));
 }
 
 double box_distance(const Box2& b, Vec2 p) {
@@ -66,7 +67,7 @@ double ball_edge(Vec3 a, Vec3 b, Vec2 p, double r) {
   const double disc = A * A * uz * uz - a2 * (B - A * A - r * r);
   if (disc < 0.0) return -kInf;
   const double s = (A * uz + std::sqrt(disc)) / a2;  // centre height above a.z
-  const double t = A + s * uz;                        // foot of the perpendicular along the edge
+  const double t = A + s * uz;                       // foot of the perpendicular along the edge
   if (t < 0.0 || t > len) return -kInf;
   return a.z + s - r;
 }
@@ -168,17 +169,21 @@ Result<DropCutter> DropCutter::build(const Mesh& mesh, const CutterShape& cutter
         const double dx = std::max({cb.min.x - tri.box.max.x, 0.0, tri.box.min.x - cb.max.x});
         const double dy = std::max({cb.min.y - tri.box.max.y, 0.0, tri.box.min.y - cb.max.y});
         if (dx * dx + dy * dy > R * R) continue;
-        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i));
+        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+           static_cast<std::size_t>(i));
       }
     }
   };
-  for (const Tri& tri : dc.tris_) for_cells(tri, [&](std::size_t c) { ++counts[c + 1]; });
-  for (std::size_t c = 0; c < ncell; ++c) counts[c + 1] += counts[c];
+  for (const Tri& tri : dc.tris_)
+    for_cells(tri, [&](std::size_t c) { ++counts[c + 1]; });
+  for (std::size_t c = 0; c < ncell; ++c)
+    counts[c + 1] += counts[c];
   dc.cell_start_ = counts;
   dc.cell_items_.resize(counts[ncell]);
   std::vector<std::uint32_t> fill(counts.begin(), counts.end() - 1);
   for (std::size_t t = 0; t < dc.tris_.size(); ++t)
-    for_cells(dc.tris_[t], [&](std::size_t c) { dc.cell_items_[fill[c]++] = static_cast<std::uint32_t>(t); });
+    for_cells(dc.tris_[t],
+              [&](std::size_t c) { dc.cell_items_[fill[c]++] = static_cast<std::uint32_t>(t); });
   // Highest triangles first, so that a query can stop early; ties by index (deterministic).
   parallel_for(ncell, 0, [&](std::size_t c) {
     auto b = dc.cell_items_.begin() + dc.cell_start_[c];
@@ -267,8 +272,9 @@ DropResult DropCutter::drop(Vec2 p) const {
   DropResult best;
   const double fx = (p.x - origin_.x) / cell_, fy = (p.y - origin_.y) / cell_;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < nx_ && fy < ny_)) return best;
-  const std::size_t c = static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(nx_) +
-                        static_cast<std::size_t>(static_cast<int>(fx));
+  const std::size_t c =
+      static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(nx_) +
+      static_cast<std::size_t>(static_cast<int>(fx));
   const double R = cutter_.radius_mm;
   for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
     const Tri& t = tris_[cell_items_[k]];
@@ -295,7 +301,8 @@ std::vector<double> grid_positions(double from, double to, double step) {
   if (!(step > 0.0) || !(to >= from)) return out;
   const auto n = static_cast<std::size_t>(std::floor((to - from) / step + 1e-9));
   out.reserve(n + 2);
-  for (std::size_t k = 0; k <= n; ++k) out.push_back(from + static_cast<double>(k) * step);
+  for (std::size_t k = 0; k <= n; ++k)
+    out.push_back(from + static_cast<double>(k) * step);
   if (out.back() < to - 1e-9) out.push_back(to);
   return out;
 }

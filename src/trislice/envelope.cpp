@@ -84,7 +84,8 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   e.nb_ = static_cast<int>(std::floor((smax - smin) / e.bin_)) + 1;
   const std::size_t nb = static_cast<std::size_t>(e.nb_);
   std::size_t total = 0;
-  for (const auto& v : per) total += v.size();
+  for (const auto& v : per)
+    total += v.size();
   e.seg_.reserve(total);
   e.start_.assign(e.n_ * nb + 1, 0);
   e.binmax_.assign(e.n_ * nb, -kInf);
@@ -94,8 +95,10 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   // Count, then fill (CSR).
   for (std::size_t j = 0; j < e.n_; ++j)
     for (const Seg& s : per[j])
-      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
-  for (std::size_t c = 0; c < e.n_ * nb; ++c) e.start_[c + 1] += e.start_[c];
+      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
+        ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
+  for (std::size_t c = 0; c < e.n_ * nb; ++c)
+    e.start_[c + 1] += e.start_[c];
   e.items_.resize(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
@@ -195,7 +198,8 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
                    rho_max * rho_max))
         pass[npass++] = b;
 #ifdef SWARF_ENV_COUNT
-    g_blocks++; g_bins += npass;
+    g_blocks++;
+    g_bins += npass;
 #endif
     if (npass == 0) return;
     for (long j = j0; j <= j1; ++j) {

@@ -19,12 +19,12 @@ void lattice(double lo, double hi, double pitch, long& k0, long& k1) {
 
 Result<TriSliceModel> build_trislice(const Mesh& mesh, double pitch_mm, const Box3& region,
                                      const Context& ctx) {
-  return build_trislice(mesh, pitch_mm, {true, true, true}, region, ctx);
+  return build_trislice_families(mesh, pitch_mm, {true, true, true}, region, ctx);
 }
 
-Result<TriSliceModel> build_trislice(const Mesh& mesh, double pitch_mm,
-                                     const std::array<bool, 3>& families, const Box3& region,
-                                     const Context& ctx) {
+Result<TriSliceModel> build_trislice_families(const Mesh& mesh, double pitch_mm,
+                                              const std::array<bool, 3>& families,
+                                              const Box3& region, const Context& ctx) {
   if (!(pitch_mm > 0.0) || !std::isfinite(pitch_mm))
     return bad_parameter("tri-slice: pitch " + std::to_string(pitch_mm) + " mm must be positive");
   if (mesh.empty()) return bad_input("tri-slice: the mesh has no triangles");
@@ -47,7 +47,8 @@ Result<TriSliceModel> build_trislice(const Mesh& mesh, double pitch_mm,
     fam.first_level = static_cast<double>(k0) * pitch_mm;
     if (!families[static_cast<std::size_t>(a)]) continue;
     std::vector<double> levels;
-    for (long k = k0; k <= k1; ++k) levels.push_back(static_cast<double>(k) * pitch_mm);
+    for (long k = k0; k <= k1; ++k)
+      levels.push_back(static_cast<double>(k) * pitch_mm);
     fam.slices = slice_mesh(mesh, axis, levels, {}, ctx);
     ctx.report("tri-slice model", (a + 1) / 3.0);
   }

@@ -57,7 +57,8 @@ PolygonSet convolve_slice(const SliceFamily& family, long level_index, double r_
 Result<SliceFamily> offset_family(const SliceFamily& family, double r_mm,
                                   const ConvolutionOptions& options, const Context& ctx) {
   if (!std::isfinite(r_mm)) return bad_parameter("convolutional offset: non-finite radius");
-  if (!(family.pitch_mm > 0.0)) return bad_parameter("convolutional offset: pitch must be positive");
+  if (!(family.pitch_mm > 0.0))
+    return bad_parameter("convolutional offset: pitch must be positive");
   if (!(options.arc_tolerance_mm > 0.0))
     return bad_parameter("convolutional offset: arc tolerance must be positive");
   SliceFamily out;

@@ -33,8 +33,10 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     // Analysed slices [j0, j1]; the inflation is needed within r of them.
     long j0 = 0, j1 = static_cast<long>(fam.size()) - 1;
     if (!o.region.empty()) {
-      j0 = std::max(j0, static_cast<long>(std::ceil((o.region.min[a] - fam.first_level) / fam.pitch_mm - 1e-9)));
-      j1 = std::min(j1, static_cast<long>(std::floor((o.region.max[a] - fam.first_level) / fam.pitch_mm + 1e-9)));
+      j0 = std::max(j0, static_cast<long>(
+                            std::ceil((o.region.min[a] - fam.first_level) / fam.pitch_mm - 1e-9)));
+      j1 = std::min(j1, static_cast<long>(
+                            std::floor((o.region.max[a] - fam.first_level) / fam.pitch_mm + 1e-9)));
     }
     if (j0 > j1) continue;
     const long nr = static_cast<long>(std::ceil(o.tool_radius_mm / fam.pitch_mm - 1e-9));
@@ -81,7 +83,8 @@ double residue_thickness(const SliceFamily& family, std::size_t j, double s) {
   }
   std::sort(zs.begin(), zs.end());
   double t = 0.0;
-  for (std::size_t k = 0; k + 1 < zs.size(); k += 2) t += zs[k + 1] - zs[k];
+  for (std::size_t k = 0; k + 1 < zs.size(); k += 2)
+    t += zs[k + 1] - zs[k];
   return t;
 }
 
@@ -89,12 +92,14 @@ double ThicknessMap::at(Vec2 p) const {
   const int i = static_cast<int>(std::floor((p.x - origin.x) / cell_mm));
   const int j = static_cast<int>(std::floor((p.y - origin.y) / cell_mm));
   if (i < 0 || j < 0 || i >= nx || j >= ny) return 0.0;
-  return mm[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)];
+  return mm[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+            static_cast<std::size_t>(i)];
 }
 
 double ThicknessMap::max() const {
   double m = 0.0;
-  for (double v : mm) m = std::max(m, v);
+  for (double v : mm)
+    m = std::max(m, v);
   return m;
 }
 
@@ -136,7 +141,8 @@ ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
       map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
     }
   }
-  for (double& v : map.mm) v = std::max(v, 0.0);
+  for (double& v : map.mm)
+    v = std::max(v, 0.0);
   return map;
 }
 
@@ -145,7 +151,8 @@ Image thickness_image(const ThicknessMap& map, double min_mm) {
   const double top = std::max(map.max(), 1e-9);
   for (int j = 0; j < map.ny; ++j)
     for (int i = 0; i < map.nx; ++i) {
-      const double t = map.mm[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) + static_cast<std::size_t>(i)];
+      const double t = map.mm[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
+                              static_cast<std::size_t>(i)];
       if (t >= min_mm && t > 0.0) img.at(i, map.ny - 1 - j) = heat_color(t / top);
     }
   return img;
@@ -166,10 +173,12 @@ std::string residue_points_ply(const RestRegions& rest, double spacing_mm) {
   }
   std::ostringstream os;
   os << "ply\nformat ascii 1.0\ncomment swarf unmachinable regions (seed 001 section 3.2)\n"
-     << "element vertex " << pts.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+     << "element vertex " << pts.size()
+     << "\nproperty float x\nproperty float y\nproperty float z\n"
      << "end_header\n";
   os.precision(6);
-  for (const Vec3& p : pts) os << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (const Vec3& p : pts)
+    os << p.x << ' ' << p.y << ' ' << p.z << '\n';
   return os.str();
 }
 

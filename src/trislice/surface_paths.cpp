@@ -19,7 +19,8 @@ std::vector<double> positions(double from, double to, double step) {
   std::vector<double> out;
   if (!(step > 0.0) || !(to >= from)) return out;
   const auto n = static_cast<std::size_t>(std::floor((to - from) / step + 1e-9));
-  for (std::size_t k = 0; k <= n; ++k) out.push_back(from + static_cast<double>(k) * step);
+  for (std::size_t k = 0; k <= n; ++k)
+    out.push_back(from + static_cast<double>(k) * step);
   if (out.back() < to - 1e-9) out.push_back(to);
   return out;
 }
@@ -42,15 +43,15 @@ void emit_line(Toolpath& tp, const std::vector<Vec3>& pts, double feed, double p
   if (pts.empty()) return;
   tp.rapid_to({pts.front().x, pts.front().y, tp.clearance_z_mm});
   tp.plunge_to(pts.front().z, plunge);
-  for (std::size_t k = 1; k < pts.size(); ++k) tp.feed_to(pts[k], feed);
+  for (std::size_t k = 1; k < pts.size(); ++k)
+    tp.feed_to(pts[k], feed);
 }
 
 // Lines (each in the + direction) to moves, one-way or zig-zag. Points above clip_z are
 // lowered to it (a roughing layer above the stock cuts air at the stock top) and a line that
 // lies entirely at the clip height is dropped.
-Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParams& p,
-                           double clip_z, Toolpath tp,
-                           const std::function<double(Vec2)>& cl_at) {
+Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParams& p, double clip_z,
+                           Toolpath tp, const std::function<double(Vec2)>& cl_at) {
   bool reverse = false;
   bool linked = false;  // the tool is down at the end of the previous line
   for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -78,7 +79,8 @@ Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParam
         tp.feed_to({xy.x, xy.y, std::min(cl_at(xy), clip_z)}, p.feed_mm_min);
       }
       tp.feed_to(b, p.feed_mm_min);
-      for (std::size_t k = 1; k < pts.size(); ++k) tp.feed_to(pts[k], p.feed_mm_min);
+      for (std::size_t k = 1; k < pts.size(); ++k)
+        tp.feed_to(pts[k], p.feed_mm_min);
     } else {
       if (linked) tp.retract();
       emit_line(tp, pts, p.feed_mm_min, p.plunge_feed_mm_min);
@@ -122,6 +124,7 @@ Status validate(const RoughingParams& p) {
   if (!(p.stepover_mm > 0.0)) return bad_parameter("roughing stepover must be positive");
   if (!(p.margin_mm >= 0.0)) return bad_parameter("roughing margin must be >= 0 mm");
   if (!(p.min_pitch_mm >= 0.0)) return bad_parameter("roughing min pitch must be >= 0 mm");
+  if (!(p.sampling_mm >= 0.0)) return bad_parameter("roughing sampling must be >= 0 mm");
   return {};
 }
 
@@ -183,7 +186,8 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
                                            std::vector<std::vector<Vec3>> lines) {
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   SWARF_RETURN_IF_ERROR(validate(p));
-  Toolpath tp = new_toolpath(tool, "tri-slice scan finishing", clearance_of(p.clearance_z_mm, model, -kInf));
+  Toolpath tp =
+      new_toolpath(tool, "tri-slice scan finishing", clearance_of(p.clearance_z_mm, model, -kInf));
   const double R = tool.radius() + p.stock_to_leave_mm;
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
   const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
@@ -196,18 +200,22 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
   return tp;
 }
 
-Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top,
-                               const Tool& tool, const ScanParams& params,
-                               const RoughingParams& rough, const Context& ctx) {
+Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
+                               const ScanParams& params, const RoughingParams& rough,
+                               const Context& ctx) {
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   SWARF_RETURN_IF_ERROR(validate(rough));
   ScanParams p = params;
   p.stepover_mm = rough.stepover_mm;
-  const double stock_top = std::isfinite(rough.stock_top_mm) ? rough.stock_top_mm : model.bounds.max.z;
-  Toolpath tp = new_toolpath(tool, "tri-slice scan roughing", clearance_of(p.clearance_z_mm, model, stock_top));
+  if (rough.sampling_mm > 0.0) p.sampling_mm = rough.sampling_mm;
+  const double stock_top =
+      std::isfinite(rough.stock_top_mm) ? rough.stock_top_mm : model.bounds.max.z;
+  Toolpath tp = new_toolpath(tool, "tri-slice scan roughing",
+                             clearance_of(p.clearance_z_mm, model, stock_top));
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
   const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
-  const int stride = std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
+  const int stride =
+      std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
   TriSliceTop coarse;
   if (stride > 1) coarse = TriSliceTop::build(model, 0.25, stride);
   const TriSliceTop& use = stride > 1 ? coarse : top;
@@ -251,16 +259,18 @@ PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
   return unite(std::span<const PolygonSet>(parts));
 }
 
-Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool,
-                               const ContourParams& p, const Context& ctx) {
+Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool, const ContourParams& p,
+                               const Context& ctx) {
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   SWARF_RETURN_IF_ERROR(validate(p));
   const SliceFamily& xy = model.family(Axis::kZ);
   const double top_z = std::isfinite(p.top_z_mm) ? p.top_z_mm : model.bounds.max.z - p.stepdown_mm;
   const double bottom_z = std::isfinite(p.bottom_z_mm) ? p.bottom_z_mm : model.bounds.min.z;
   std::vector<double> levels;
-  for (double z = top_z; z >= bottom_z - 1e-9; z -= p.stepdown_mm) levels.push_back(z);
-  if (levels.empty()) return Status{Error::kEmptyResult, "contour: no level between top and bottom"};
+  for (double z = top_z; z >= bottom_z - 1e-9; z -= p.stepdown_mm)
+    levels.push_back(z);
+  if (levels.empty())
+    return Status{Error::kEmptyResult, "contour: no level between top and bottom"};
   const double R = tool.radius() + p.stock_to_leave_mm;
   ConvolutionOptions co;
   co.arc_tolerance_mm = p.arc_tolerance_mm;
@@ -273,11 +283,13 @@ Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool,
     oo.arc_tolerance_mm = p.arc_tolerance_mm;
     for (int k = p.radial_passes - 1; k >= 0; --k) {
       const PolygonSet ring_set = k == 0 ? region : offset(region, k * p.radial_step_mm, oo);
-      for (const Ring& r : ring_set.rings) rings[i].push_back(r);
+      for (const Ring& r : ring_set.rings)
+        rings[i].push_back(r);
     }
   });
   if (ctx.cancelled()) return Status{Error::kCancelled, "contour: cancelled"};
-  Toolpath tp = new_toolpath(tool, "tri-slice contour", clearance_of(p.clearance_z_mm, model, -kInf));
+  Toolpath tp =
+      new_toolpath(tool, "tri-slice contour", clearance_of(p.clearance_z_mm, model, -kInf));
   for (std::size_t i = 0; i < levels.size(); ++i) {
     for (const Ring& r : rings[i]) {
       if (r.size() < 3) continue;

@@ -18,20 +18,22 @@ Mesh uv_sphere(Vec3 c, double r, int seg) {
     const double th = kPi * i / rings;
     for (int j = 0; j < seg; ++j) {
       const double ph = 2 * kPi * j / seg;
-      m.vertices.push_back(c + Vec3{r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
-                                    r * std::cos(th)});
+      m.vertices.push_back(c + Vec3{r * std::sin(th) * std::cos(ph),
+                                    r * std::sin(th) * std::sin(ph), r * std::cos(th)});
     }
   }
   m.vertices.push_back(c + Vec3{0, 0, -r});
   auto id = [&](int i, int j) { return static_cast<std::uint32_t>(1 + (i - 1) * seg + (j % seg)); };
   const auto south = static_cast<std::uint32_t>(m.vertices.size() - 1);
-  for (int j = 0; j < seg; ++j) m.triangles.push_back({0, id(1, j), id(1, j + 1)});
+  for (int j = 0; j < seg; ++j)
+    m.triangles.push_back({0, id(1, j), id(1, j + 1)});
   for (int i = 1; i + 1 < rings; ++i)
     for (int j = 0; j < seg; ++j) {
       m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
-  for (int j = 0; j < seg; ++j) m.triangles.push_back({id(rings - 1, j), south, id(rings - 1, j + 1)});
+  for (int j = 0; j < seg; ++j)
+    m.triangles.push_back({id(rings - 1, j), south, id(rings - 1, j + 1)});
   return m;
 }
 
@@ -54,7 +56,8 @@ Mesh random_soup(int n, std::uint32_t seed) {
   Mesh m;
   for (int t = 0; t < n; ++t) {
     const Vec3 a{u(rng), u(rng), z(rng)};
-    for (int k = 0; k < 3; ++k) m.vertices.push_back(k == 0 ? a : a + Vec3{d(rng), d(rng), d(rng)});
+    for (int k = 0; k < 3; ++k)
+      m.vertices.push_back(k == 0 ? a : a + Vec3{d(rng), d(rng), d(rng)});
     const auto b = static_cast<std::uint32_t>(3 * t);
     m.triangles.push_back({b, b + 1, b + 2});
   }
@@ -174,8 +177,8 @@ TEST(DropCutter, PlaneAndBoxEdgeClosedForms) {
   // A tilted plane (two triangles): ball rests at z = plane + r / cos(tilt) - r.
   Mesh plane;
   const double slope = 0.3;
-  plane.vertices = {{-50, -50, -50 * slope}, {50, -50, 50 * slope}, {50, 50, 50 * slope},
-                    {-50, 50, -50 * slope}};
+  plane.vertices = {
+      {-50, -50, -50 * slope}, {50, -50, 50 * slope}, {50, 50, 50 * slope}, {-50, 50, -50 * slope}};
   plane.triangles = {{0, 1, 2}, {0, 2, 3}};
   auto dc = DropCutter::build(plane, CutterShape{4.0, 4.0});
   ASSERT_TRUE(dc.ok());
@@ -197,7 +200,8 @@ TEST(DropCutter, GridIsIndependentOfThreadCount) {
   auto b = drop_grid(*dc, grid, -100.0, many);
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_EQ(a->size(), b->size());
-  for (std::size_t i = 0; i < a->size(); ++i) ASSERT_EQ((*a)[i], (*b)[i]);
+  for (std::size_t i = 0; i < a->size(); ++i)
+    ASSERT_EQ((*a)[i], (*b)[i]);
   // Last line and last point sit on the region's far edges.
   EXPECT_DOUBLE_EQ(a->back().x, 12.0);
   EXPECT_DOUBLE_EQ(a->back().y, 12.0);

@@ -131,7 +131,8 @@ TEST(TriSlicePaths, ScanNeverCutsIntoTheOffsetAndZigzagLinksStayOnTheSurface) {
   EXPECT_GT(feeds, 100u);
   // Zig-zag: one retract at the end only (links stay down).
   std::size_t rapids_up = 0;
-  for (const Move& m : fin->moves) rapids_up += m.kind == MoveKind::kRapid && m.end.z == fin->clearance_z_mm;
+  for (const Move& m : fin->moves)
+    rapids_up += m.kind == MoveKind::kRapid && m.end.z == fin->clearance_z_mm;
   EXPECT_LE(rapids_up, 3u);
 }
 
@@ -216,7 +217,8 @@ TEST(TriSliceRest, InnerFilletShowsAndOuterDoesNot) {
   const ThicknessMap map = thickness_map(*rest, 0.25);
   auto band_max = [&](double lo, double hi) {
     double m = 0.0;
-    for (double x = lo; x <= hi; x += 0.05) m = std::max({m, map.at({x, 0.01}), map.at({-x, 0.01})});
+    for (double x = lo; x <= hi; x += 0.05)
+      m = std::max({m, map.at({x, 0.01}), map.at({-x, 0.01})});
     return m;
   };
   // Inner fillet: touches the plate at radius 25 - 2 sqrt(30) = 14.05.

@@ -61,7 +61,8 @@ TEST(TriSliceModel, IndependentOfThreadCount) {
     const auto& fa = a->families[static_cast<std::size_t>(f)];
     const auto& fb = b->families[static_cast<std::size_t>(f)];
     ASSERT_EQ(fa.size(), fb.size());
-    for (std::size_t j = 0; j < fa.size(); ++j) ASSERT_EQ(fa.slices[j].rings, fb.slices[j].rings);
+    for (std::size_t j = 0; j < fa.size(); ++j)
+      ASSERT_EQ(fa.slices[j].rings, fb.slices[j].rings);
   }
 }
 
@@ -136,7 +137,8 @@ TEST(ConvolutionalOffset, EnvelopeEqualsTheTopOfTheInflatedSlice) {
       // exact value the polygon approximates, never below it.
       const double h = 1e-3;
       const double slope = (env.centre_height({x + h, k * 0.25}, r, -1e9) -
-                            env.centre_height({x - h, k * 0.25}, r, -1e9)) / (2 * h);
+                            env.centre_height({x - h, k * 0.25}, r, -1e9)) /
+                           (2 * h);
       EXPECT_GE(point, poly - 2e-5) << "y " << k * 0.25 << " x " << x;
       EXPECT_LE(point - poly, 2.5 * 0.0011 * std::sqrt(1 + slope * slope) + 1e-5)
           << "y " << k * 0.25 << " x " << x;

@@ -45,10 +45,10 @@ struct CutterShape {
   double radius_mm = 4.0;         ///< R
   double corner_radius_mm = 4.0;  ///< 0 flat, R ball, in between bull-nose
   static CutterShape from(const Tool& tool) {
-    return {tool.radius(), tool.kind == ToolKind::kFlat
-                               ? 0.0
-                               : (tool.kind == ToolKind::kBall ? tool.radius()
-                                                               : tool.corner_radius_mm)};
+    return {tool.radius(),
+            tool.kind == ToolKind::kFlat
+                ? 0.0
+                : (tool.kind == ToolKind::kBall ? tool.radius() : tool.corner_radius_mm)};
   }
 };
 
@@ -80,7 +80,7 @@ class DropCutter {
 
   struct Tri {
     std::array<Vec3, 3> p;
-    Vec3 n;  ///< unit normal with n.z >= 0 (orientation does not matter to a drop)
+    Vec3 n;          ///< unit normal with n.z >= 0 (orientation does not matter to a drop)
     double d = 0.0;  ///< plane: dot(n, x) = d
     double zmax = 0.0;
     Box2 box;
@@ -118,7 +118,7 @@ std::vector<double> grid_positions(double from, double to, double step);
 
 /// CL points (tool tip) of every grid point, line after line, parallel over lines; points
 /// with nothing under the tool get z = `floor_z`. Identical for any thread count.
-Result<std::vector<Vec3>> drop_grid(const DropCutter& cutter, const ClGrid& grid,
-                                    double floor_z, const Context& ctx = default_context());
+Result<std::vector<Vec3>> drop_grid(const DropCutter& cutter, const ClGrid& grid, double floor_z,
+                                    const Context& ctx = default_context());
 
 }  // namespace swarf

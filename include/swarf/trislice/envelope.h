@@ -38,8 +38,7 @@ class SliceEnvelope {
   /// family (Eq. (1) evaluated at p), or `at_least` when no slice rises above it.
   /// `hint` (optional) carries the segment that decided the previous query of a scan line in
   /// and out; it only speeds the query up, the answer does not depend on it.
-  double centre_height(Vec2 p, double r_mm, double at_least,
-                       std::uint32_t* hint = nullptr) const;
+  double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
   static constexpr std::uint32_t kNoHint = 0xffffffffu;
 
   std::size_t segment_count() const { return seg_.size(); }
@@ -57,7 +56,7 @@ class SliceEnvelope {
   int nb_ = 0;
   std::vector<Seg> seg_;
   std::vector<std::uint32_t> slice_of_;  ///< slice index of each segment
-  std::vector<std::uint32_t> start_;  ///< CSR over (slice, bin)
+  std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
   std::vector<std::uint32_t> items_;
   std::vector<double> binmax_;    ///< per (slice, bin)
   std::vector<double> blockmax_;  ///< per (block of kBlock slices, bin)

@@ -54,7 +54,7 @@ struct ThicknessMap {
   int nx = 0, ny = 0;
   double cell_mm = 0.1;
   Vec2 origin;
-  std::vector<double> mm;  ///< nx * ny, row-major from min y
+  std::vector<double> mm;   ///< nx * ny, row-major from min y
   double at(Vec2 p) const;  ///< cell containing p (0 outside)
   double max() const;
 };

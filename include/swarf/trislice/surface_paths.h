@@ -24,8 +24,8 @@ struct ScanParams {
   double stepover_mm = 0.25;  ///< radial depth of cut between lines (Table 1 finishing)
   double sampling_mm = 0.1;   ///< CL point spacing along a line before simplification
   double stock_to_leave_mm = 0.0;
-  Box2 region;                      ///< tool-axis area; empty: the model's xy bounds
-  double tolerance_mm = 0.001;      ///< simplification of each line (chordal), 0 = keep all
+  Box2 region;                  ///< tool-axis area; empty: the model's xy bounds
+  double tolerance_mm = 0.001;  ///< simplification of each line (chordal), 0 = keep all
   double feed_mm_min = 1000.0;
   double plunge_feed_mm_min = 300.0;
   double clearance_z_mm = kAuto;  ///< default: 5 mm above the model (or stock) top
@@ -36,19 +36,23 @@ struct ScanParams {
 /// k = layers-1 down to 0, each clipped to the stock top.
 struct RoughingParams {
   int layers = 5;
-  double stepdown_mm = 2.0;  ///< axial depth of cut
-  double stepover_mm = 2.0;  ///< radial depth of cut
-  double margin_mm = 0.1;    ///< stock left for finishing
+  double stepdown_mm = 2.0;     ///< axial depth of cut
+  double stepover_mm = 2.0;     ///< radial depth of cut
+  double margin_mm = 0.1;       ///< stock left for finishing
   double stock_top_mm = kAuto;  ///< default: the model top
   /// Roughing reads every k-th slice so that its pitch is at least this (its error, tens of
   /// micrometres at 0.125 mm, is far inside the margin); 0 = every slice.
   double min_pitch_mm = 0.125;
+  /// CL spacing along roughing lines: the chord between two points of an offset surface of
+  /// radius >= r + margin sags at most s^2 / (8 (r + margin)) (8 um at 0.5 mm, r = 4), far
+  /// inside the margin. 0 = the scan's own sampling.
+  double sampling_mm = 0.5;
 };
 
 struct ContourParams {
   double stepdown_mm = 1.0;  ///< between waterline levels (tip heights)
   double stock_to_leave_mm = 0.0;
-  int radial_passes = 1;      ///< rings per level: the offset contour and k * radial_step outside
+  int radial_passes = 1;  ///< rings per level: the offset contour and k * radial_step outside
   double radial_step_mm = 2.0;
   double top_z_mm = kAuto;     ///< highest tip level; default: model top - stepdown
   double bottom_z_mm = kAuto;  ///< lowest tip level; default: model bottom
@@ -82,9 +86,9 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
                                            std::vector<std::vector<Vec3>> lines);
 
 /// Roughing scan per Table 1 (its stepover replaces params.stepover_mm).
-Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top,
-                               const Tool& tool, const ScanParams& params,
-                               const RoughingParams& rough, const Context& ctx = default_context());
+Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
+                               const ScanParams& params, const RoughingParams& rough,
+                               const Context& ctx = default_context());
 
 /// Tool-centre region at tip height z for a ball of radius r_mm (3-axis: the ball's lower half
 /// against the xy slices within r below the centre by Eq. (1), the shank cylinder against every
