@@ -44,8 +44,8 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
 
   OperationOutput out;
   const auto t0 = std::chrono::steady_clock::now();
-  // Scanning reads the x and y families, waterlines the z family: slice only what is used.
-  const std::array<bool, 3> families = pattern == "scan" ? std::array<bool, 3>{true, true, false}
+  // Scanning reads all three families (the xy one holds steep walls), waterlines only z.
+  const std::array<bool, 3> families = pattern == "scan" ? std::array<bool, 3>{true, true, true}
                                                          : std::array<bool, 3>{false, false, true};
   auto model = build_trislice_families(stl->mesh, pitch, families, {}, ctx);
   if (!model.ok()) return model.status().with_context(in.input_path);

@@ -113,19 +113,29 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       }
     }
   }
+  // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
+  // kBlock^2 slices: a query rejects far slices wholesale with few checks.
+  e.nbc_ = (e.nb_ + kCoarse - 1) / kCoarse;
+  const std::size_t nbc = static_cast<std::size_t>(e.nbc_);
   const std::size_t nblock = (e.n_ + kBlock - 1) / kBlock;
-  e.blockmax_.assign(nblock * nb, -kInf);
+  const std::size_t nsuper = (nblock + kBlock - 1) / kBlock;
+  e.blockmax_.assign(nblock * nbc, -kInf);
+  e.supermax_.assign(nsuper * nbc, -kInf);
   for (std::size_t j = 0; j < e.n_; ++j)
     for (std::size_t b = 0; b < nb; ++b) {
-      double& m = e.blockmax_[(j / kBlock) * nb + b];
-      m = std::max(m, e.binmax_[j * nb + b]);
+      const double v = e.binmax_[j * nb + b];
+      double& m = e.blockmax_[(j / kBlock) * nbc + b / kCoarse];
+      m = std::max(m, v);
+      double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
+      sm = std::max(sm, v);
     }
   return e;
 }
 
 std::size_t SliceEnvelope::memory_bytes() const {
-  return seg_.size() * sizeof(Seg) + (start_.size() + items_.size()) * sizeof(std::uint32_t) +
-         (binmax_.size() + blockmax_.size()) * sizeof(double);
+  return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
+         (start_.size() + items_.size()) * sizeof(std::uint32_t) +
+         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double);
 }
 
 double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
@@ -138,8 +148,8 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   if (jlo > jhi) return best;
   const long jc = std::clamp(std::lround((q - first_) / pitch_), jlo, jhi);
   const long B = static_cast<long>(kBlock);
-  const long bc = jc / B, blo = jlo / B, bhi = jhi / B;
   const std::size_t nb = static_cast<std::size_t>(nb_);
+  const std::size_t nbc = static_cast<std::size_t>(nbc_);
   const double smax = smin_ + bin_ * nb_;
   auto bins = [&](double rho, int& b0, int& b1) {
     if (s + rho < smin_ || s - rho > smax) return false;
@@ -183,24 +193,50 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double rho2 = r * r - dq * dq;
     if (rho2 >= 0.0) drop(*hint, std::sqrt(rho2), rho2);
   }
-  auto visit_block = [&](long blk) {
-    const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
+  // Can a disc of squared radius rho2 at s, resting on the top of coarse bin cb, beat best?
+  auto coarse_can_beat = [&](int cb, double top, double rho2) {
+    const double lo = smin_ + bin_ * kCoarse * cb, hi = lo + bin_ * kCoarse;
+    const double dx = std::max({lo - s, 0.0, s - hi});
+    const double room = rho2 - dx * dx;
+    if (room < 0.0) return false;
+    const double need = best - top;
+    return need < 0.0 || room > need * need;
+  };
+  // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
+  auto reach2 = [&](long j0, long j1) {
     const double l0 = level(j0), l1 = level(j1);
     const double dmin = (q >= l0 && q <= l1) ? 0.0 : std::min(std::fabs(q - l0), std::fabs(q - l1));
-    const double rho_max = std::sqrt(std::max(0.0, r * r - dmin * dmin));
+    return std::max(0.0, r * r - dmin * dmin);
+  };
+  auto coarse_range = [&](double rho, int& c0, int& c1) {
     int b0 = 0, b1 = -1;
-    if (!bins(rho_max, b0, b1)) return;
-    // Bins of this block that can still beat the best centre; only those are opened below.
+    if (!bins(rho, b0, b1)) return false;
+    c0 = b0 / static_cast<int>(kCoarse);
+    c1 = b1 / static_cast<int>(kCoarse);
+    return true;
+  };
+  auto visit_block = [&](long blk) {
+    const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
+    if (j0 > j1) return;
+    const double rm2 = reach2(j0, j1);
+    int c0 = 0, c1 = -1;
+    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
+    // Fine bins of this block that can still beat the best centre; only those are opened.
     int pass[4096];
     int npass = 0;
-    for (int b = b0; b <= b1 && npass < 4096; ++b)
-      if (can_beat(b, blockmax_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)],
-                   rho_max * rho_max))
+    int b0 = 0, b1 = -1;
+    bins(std::sqrt(rm2), b0, b1);
+    for (int cb = c0; cb <= c1; ++cb) {
+      if (!coarse_can_beat(
+              cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
+              rm2))
+        continue;
+      for (int b = std::max(b0, cb * static_cast<int>(kCoarse));
+           b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
+           npass < 4096;
+           ++b)
         pass[npass++] = b;
-#ifdef SWARF_ENV_COUNT
-    g_blocks++;
-    g_bins += npass;
-#endif
+    }
     if (npass == 0) return;
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
@@ -211,18 +247,127 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
         const int b = pass[m];
         const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
         if (!can_beat(b, binmax_[cell], rho2)) continue;
-        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
           drop(items_[k], rho, rho2);
-        }
       }
     }
   };
-  visit_block(bc);
-  for (long k = 1; bc - k >= blo || bc + k <= bhi; ++k) {
-    if (bc - k >= blo) visit_block(bc - k);
-    if (bc + k <= bhi) visit_block(bc + k);
+  const long SB = B * B;
+  auto visit_super = [&](long sup) {
+    const long j0 = std::max(jlo, sup * SB), j1 = std::min(jhi, sup * SB + SB - 1);
+    if (j0 > j1) return;
+    const double rm2 = reach2(j0, j1);
+    int c0 = 0, c1 = -1;
+    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
+    bool any = false;
+    for (int cb = c0; cb <= c1 && !any; ++cb)
+      any = coarse_can_beat(
+          cb, supermax_[static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(cb)], rm2);
+    if (!any) return;
+    // Blocks of this super-block, nearest to q first.
+    const long b_lo = j0 / B, b_hi = j1 / B;
+    const long b_c = std::clamp(jc / B, b_lo, b_hi);
+    visit_block(b_c);
+    for (long k = 1; b_c - k >= b_lo || b_c + k <= b_hi; ++k) {
+      if (b_c - k >= b_lo) visit_block(b_c - k);
+      if (b_c + k <= b_hi) visit_block(b_c + k);
+    }
+  };
+  const long sc = jc / SB, slo = jlo / SB, shi = jhi / SB;
+  visit_super(sc);
+  for (long k = 1; sc - k >= slo || sc + k <= shi; ++k) {
+    if (sc - k >= slo) visit_super(sc - k);
+    if (sc + k <= shi) visit_super(sc + k);
   }
   if (hint != nullptr && best_id != kNoHint) *hint = best_id;
+  return best;
+}
+
+LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int stride) {
+  LevelEnvelope e;
+  e.cell_ = cell_mm > 0.0 ? cell_mm : 1.0;
+  const long base = fam.pitch_mm > 0.0 ? std::lround(fam.first_level / fam.pitch_mm) : 0;
+  Box2 box;
+  for (std::size_t j = 0; j < fam.size(); ++j) {
+    const long k = base + static_cast<long>(j);
+    if (stride > 1 && ((k % stride) + stride) % stride != 0) continue;
+    const double z = fam.level(j);
+    for (const Ring& ring : fam.slices[j].rings)
+      for (std::size_t q = 0; q < ring.size(); ++q) {
+        const Vec2 a = ring[q], b = ring[(q + 1) % ring.size()];
+        e.seg_.push_back({a.x, a.y, b.x, b.y, z});
+        box.add(a);
+      }
+  }
+  if (e.seg_.empty()) return e;
+  e.origin_ = box.min;
+  e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
+  e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
+  auto cells = [&](const Seg& g, auto&& fn) {
+    const int i0 = static_cast<int>(std::floor((std::min(g.x0, g.x1) - e.origin_.x) / e.cell_));
+    const int i1 = static_cast<int>(std::floor((std::max(g.x0, g.x1) - e.origin_.x) / e.cell_));
+    const int j0 = static_cast<int>(std::floor((std::min(g.y0, g.y1) - e.origin_.y) / e.cell_));
+    const int j1 = static_cast<int>(std::floor((std::max(g.y0, g.y1) - e.origin_.y) / e.cell_));
+    for (int j = std::max(0, j0); j <= std::min(e.ny_ - 1, j1); ++j)
+      for (int i = std::max(0, i0); i <= std::min(e.nx_ - 1, i1); ++i)
+        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
+           static_cast<std::size_t>(i));
+  };
+  e.start_.assign(ncell + 1, 0);
+  for (const Seg& g : e.seg_)
+    cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
+  for (std::size_t c = 0; c < ncell; ++c)
+    e.start_[c + 1] += e.start_[c];
+  e.items_.resize(e.start_.back());
+  std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
+  for (std::size_t k = 0; k < e.seg_.size(); ++k)
+    cells(e.seg_[k], [&](std::size_t c) { e.items_[fill[c]++] = static_cast<std::uint32_t>(k); });
+  // Highest level first in every cell (ties by index: deterministic).
+  for (std::size_t c = 0; c < ncell; ++c)
+    std::sort(e.items_.begin() + e.start_[c], e.items_.begin() + e.start_[c + 1],
+              [&](std::uint32_t a, std::uint32_t b) {
+                return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
+              });
+  return e;
+}
+
+std::size_t LevelEnvelope::memory_bytes() const {
+  return seg_.size() * sizeof(Seg) + (start_.size() + items_.size()) * sizeof(std::uint32_t);
+}
+
+double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
+  if (seg_.empty() || !(r > 0.0)) return best;
+  const double r2 = r * r;
+  const int i0 = std::max(0, static_cast<int>(std::floor((p.x - r - origin_.x) / cell_)));
+  const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + r - origin_.x) / cell_)));
+  const int j0 = std::max(0, static_cast<int>(std::floor((p.y - r - origin_.y) / cell_)));
+  const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y + r - origin_.y) / cell_)));
+  for (int j = j0; j <= j1; ++j) {
+    const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
+    const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
+    for (int i = i0; i <= i1; ++i) {
+      const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
+      const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
+      const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
+      if (room < 0.0) continue;
+      const std::size_t c =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+        const Seg& g = seg_[items_[k]];
+        const double need = best - g.z;
+        if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
+        const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+        const double len2 = ex * ex + ey * ey;
+        double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+        const double d2 = qx * qx + qy * qy;
+        if (d2 > r2) continue;
+        best = std::max(best, g.z + std::sqrt(r2 - d2));
+      }
+    }
+  }
   return best;
 }
 
@@ -230,6 +375,7 @@ TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int st
   TriSliceTop t;
   t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
   t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
+  t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
   return t;
 }
 
@@ -238,7 +384,8 @@ double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* h
   const SliceEnvelope& b = primary == Axis::kX ? y_ : x_;
   std::uint32_t* ha = hint != nullptr ? &hint->primary : nullptr;
   std::uint32_t* hb = hint != nullptr ? &hint->secondary : nullptr;
-  return b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb);
+  return z_.centre_height(p, r_mm,
+                          b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb));
 }
 
 }  // namespace swarf

@@ -112,7 +112,10 @@ TEST(TriSlicePaths, ScanNeverCutsIntoTheOffsetAndZigzagLinksStayOnTheSurface) {
   // a wall: there the height changes by millimetres over micrometres of x.
   const double R = 4.0 + 0.3, eps = 0.012;
   auto dc_in = DropCutter::build(torus, CutterShape{R - eps, R - eps});
-  auto dc = DropCutter::build(torus, CutterShape{R, R});
+  // Upper check: a ball grown by the 1e-5 mm grid of the polygons (3e-5 in 3D), since where
+  // the ball grazes a ring the rounding is amplified by R / sqrt(R^2 - d^2).
+  const double grid = 3e-5;
+  auto dc = DropCutter::build(torus, CutterShape{R + grid, R + grid});
   ASSERT_TRUE(dc.ok() && dc_in.ok());
   std::size_t feeds = 0;
   for (const Move& m : fin->moves) {
@@ -125,7 +128,7 @@ TEST(TriSlicePaths, ScanNeverCutsIntoTheOffsetAndZigzagLinksStayOnTheSurface) {
     // Never above the exact CL (the slices are part of the solid) but for the 1e-5 mm grid.
     const DropResult d = dc->drop(m.end.xy());
     if (d.hit()) {
-      EXPECT_LE(m.end.z, d.tip_z + 0.3 + 2e-5) << m.end.x << " " << m.end.y;
+      EXPECT_LE(m.end.z + 4.0, d.tip_z + R + grid + 1e-9) << m.end.x << " " << m.end.y;
     }
   }
   EXPECT_GT(feeds, 100u);

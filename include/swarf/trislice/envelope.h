@@ -15,9 +15,10 @@
 // parallel to the zx planes and vice versa, so together they bound the error of offset.h with
 // theta >= 45 degrees everywhere (a vertical wall is crossed by one family at >= 45 degrees).
 //
-// Per slice the upward edges are bucketed along the line in bins that carry their highest z;
-// blocks of 16 slices carry the highest z of their bins. A query visits slices nearest first
-// and skips any block, slice or bin whose highest z + rho cannot beat the best centre so far.
+// Per slice the upward edges are bucketed along the line in 0.5 mm bins carrying their highest z;
+// blocks of 16 slices and super-blocks of 256 carry the highest z per 1 mm. A query visits slices
+// nearest first and skips any block, slice or bin whose highest z + rho cannot beat the best centre
+// so far.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,7 @@ class SliceEnvelope {
  public:
   /// Family must be normal to x or y. `bin_mm`: bin width along the slices. `stride` > 1
   /// reads every stride-th slice only (a coarser model for roughing).
-  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 0.25, int stride = 1);
+  static SliceEnvelope build(const SliceFamily& family, double bin_mm = 0.5, int stride = 1);
 
   /// Highest centre height of a ball of radius r_mm over p that clears every slice of the
   /// family (Eq. (1) evaluated at p), or `at_least` when no slice rises above it.
@@ -59,8 +60,37 @@ class SliceEnvelope {
   std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
   std::vector<std::uint32_t> items_;
   std::vector<double> binmax_;    ///< per (slice, bin)
-  std::vector<double> blockmax_;  ///< per (block of kBlock slices, bin)
+  int nbc_ = 0;                   ///< coarse bins
+  std::vector<double> blockmax_;  ///< per (block of kBlock slices, coarse bin)
+  std::vector<double> supermax_;  ///< per (super-block of kBlock^2 slices, coarse bin)
   static constexpr std::size_t kBlock = 16;
+  static constexpr std::size_t kCoarse = 2;  ///< fine bins per coarse bin
+};
+
+/// The xy family's share of the top: a ball centred over p at height zc touches the ring of
+/// slice l (level z_l) when the ring comes within sqrt(R^2 - (zc - z_l)^2) of p, so it holds the
+/// centre at z_l + sqrt(R^2 - d^2), d the horizontal distance from p to the ring. It is the
+/// family that sees steep walls and the nesting of the ball in fillets of its own radius (the
+/// vertical families see those at a grazing angle). Ring edges are listed in the cells of a
+/// uniform xy grid that they cross, highest level first; a query walks the cells within R and
+/// stops in each at the first level that cannot beat the best centre so far. Interiors of the
+/// rings are not contacts: horizontal faces are held by the vertical families' slice tops.
+class LevelEnvelope {
+ public:
+  static LevelEnvelope build(const SliceFamily& xy_family, double cell_mm = 1.0, int stride = 1);
+  double centre_height(Vec2 p, double r_mm, double at_least) const;
+  std::size_t segment_count() const { return seg_.size(); }
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Seg {
+    double x0, y0, x1, y1, z;
+  };
+  std::vector<Seg> seg_;
+  Vec2 origin_;
+  double cell_ = 1.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<std::uint32_t> start_, items_;
 };
 
 /// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
@@ -69,18 +99,23 @@ struct ScanHint {
   std::uint32_t secondary = SliceEnvelope::kNoHint;
 };
 
-/// Both vertical families of a model, queried together.
+/// The three families of a model queried together (the xy family only when it was sliced).
 class TriSliceTop {
  public:
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.25, int stride = 1);
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1);
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,
                        ScanHint* hint = nullptr) const;
   const SliceEnvelope& family(Axis a) const { return a == Axis::kX ? x_ : y_; }
+  const LevelEnvelope& levels() const { return z_; }
+  std::size_t memory_bytes() const {
+    return x_.memory_bytes() + y_.memory_bytes() + z_.memory_bytes();
+  }
 
  private:
   SliceEnvelope x_, y_;
+  LevelEnvelope z_;
 };
 
 }  // namespace swarf
