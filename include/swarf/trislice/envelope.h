@@ -10,10 +10,10 @@
 // P_j. That is a 2D drop against the upward-facing edges of each slice, nothing else, with no
 // polygon union at all. Written with the distance y - y_j instead of (i - j) ds it holds at
 // any y, and for the family normal to x as well (with x - x_k): the same query on the yz
-// family gives that family's inflated top at any point. The model's top is the higher of the
-// two families' answers (superposition, section 2.1): the yz family holds walls that are
-// parallel to the zx planes and vice versa, so together they bound the error of offset.h with
-// theta >= 45 degrees everywhere (a vertical wall is crossed by one family at >= 45 degrees).
+// family gives that family's inflated top at any point; LevelEnvelope below does it for the
+// xy family. The model's top is the highest of the three answers (superposition, section
+// 2.1): each family holds the walls nearly parallel to the others' planes, so together they
+// bound the error of offset.h with theta >= 54.7 degrees everywhere.
 //
 // Per slice the upward edges are bucketed along the line in 0.5 mm bins carrying their highest z;
 // blocks of 16 slices and super-blocks of 256 carry the highest z per 1 mm. A query visits slices
