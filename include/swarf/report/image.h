@@ -26,6 +26,8 @@ struct Image {
   const Rgb& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
 };
 
+/// The image encoded as PNG bytes.
+std::string png_bytes(const Image& image);
 /// Writes a PNG atomically.
 Status write_png(const std::string& path, const Image& image);
 

@@ -1,0 +1,269 @@
+// The one wrapper around Clipper 6 (STYLE.md 2): every boolean operation and offset in
+// Swarf goes through here. Coordinates are scaled to integers on a 1e-5 mm grid, Clipper's
+// arc tolerance is given in those scaled units, and every result is cleaned and oriented
+// (outers CCW, holes CW) before it leaves this file.
+#include "swarf/polygon/polygon.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace swarf {
+namespace {
+
+namespace cl = ClipperLib;
+
+// Grid units per mm. Written out (not 1 / 1e-5, which is not exactly 1e5 in binary) so that
+// grid points convert back to the nearest double of their decimal value.
+constexpr double kScale = 1e5;
+static_assert(kScale * kPolygonResolutionMm == 1.0);
+// CleanPolygons drops vertices closer than this to a neighbour or to the line through its
+// neighbours, in grid units: 1.5 units = 1.5e-5 mm, far below any machining tolerance
+// but enough to remove the slivers and spikes that integer rounding leaves after offsets.
+constexpr double kCleanDistance = 1.5;
+// Coordinates beyond this are refused by Clipper (its hiRange is about 4.6e18 units);
+// keep a wide safety margin. 1e12 mm is far outside any machine.
+constexpr double kMaxAbsMm = 1e12;
+
+cl::cInt to_grid(double v) {
+  return static_cast<cl::cInt>(std::llround(std::clamp(v, -kMaxAbsMm, kMaxAbsMm) * kScale));
+}
+
+cl::Path to_path(const std::vector<Vec2>& ring) {
+  cl::Path path;
+  path.reserve(ring.size());
+  for (const Vec2& p : ring) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // a NaN point has no place
+    const cl::IntPoint q(to_grid(p.x), to_grid(p.y));
+    if (!path.empty() && path.back() == q) continue;
+    path.push_back(q);
+  }
+  return path;
+}
+
+cl::Paths to_paths(const PolygonSet& set) {
+  cl::Paths paths;
+  paths.reserve(set.rings.size());
+  for (const Ring& r : set.rings) {
+    cl::Path p = to_path(r);
+    if (p.size() >= 3) paths.push_back(std::move(p));
+  }
+  return paths;
+}
+
+Ring to_ring(const cl::Path& path) {
+  Ring ring;
+  ring.reserve(path.size());
+  // Division (not multiplication by 1e-5) so that grid points map to the nearest double.
+  for (const cl::IntPoint& q : path)
+    ring.push_back({static_cast<double>(q.X) / kScale, static_cast<double>(q.Y) / kScale});
+  return ring;
+}
+
+cl::PolyFillType to_clipper(FillRule rule) {
+  switch (rule) {
+    case FillRule::kEvenOdd:
+      return cl::pftEvenOdd;
+    case FillRule::kNonZero:
+      return cl::pftNonZero;
+    case FillRule::kPositive:
+      return cl::pftPositive;
+  }
+  return cl::pftNonZero;
+}
+
+// Cleans Clipper output and converts it. Clipper already returns outers with positive and
+// holes with negative orientation; cleaning never flips a ring, but it can collapse one, so
+// rings left with fewer than three points or zero area are dropped.
+PolygonSet from_paths(cl::Paths paths) {
+  cl::CleanPolygons(paths, kCleanDistance);
+  PolygonSet out;
+  out.rings.reserve(paths.size());
+  for (const cl::Path& p : paths) {
+    if (p.size() < 3 || cl::Area(p) == 0.0) continue;
+    out.rings.push_back(to_ring(p));
+  }
+  return out;
+}
+
+// Adds the outer rings of `node`'s children, each followed by its holes, to `parts`;
+// islands inside holes become parts of their own.
+void collect_parts(const cl::PolyNode& node, std::vector<PolygonSet>& parts) {
+  for (const cl::PolyNode* outer : node.Childs) {
+    cl::Paths paths{outer->Contour};
+    for (const cl::PolyNode* hole : outer->Childs)
+      paths.push_back(hole->Contour);
+    PolygonSet part = from_paths(std::move(paths));
+    // A part whose outer ring collapsed while cleaning is dropped with its holes.
+    if (!part.empty() && signed_area(part.rings.front()) > 0.0) parts.push_back(std::move(part));
+    for (const cl::PolyNode* hole : outer->Childs)
+      collect_parts(*hole, parts);
+  }
+}
+
+PolygonSet boolean(cl::ClipType type, const cl::Paths& subject, const cl::Paths& clip) {
+  cl::Clipper c;
+  c.AddPaths(subject, cl::ptSubject, true);
+  c.AddPaths(clip, cl::ptClip, true);
+  cl::Paths solution;
+  c.Execute(type, solution, cl::pftNonZero, cl::pftNonZero);
+  return from_paths(std::move(solution));
+}
+
+double arc_tolerance_grid(const OffsetOptions& options) {
+  // Clipper's own default (0.25) is in grid units, i.e. 2.5e-6 mm here: far too fine and
+  // slow. Convert the tolerance in mm, never below one grid step.
+  const double tol = std::isfinite(options.arc_tolerance_mm) ? options.arc_tolerance_mm : 0.0;
+  return std::max(tol * kScale, 1.0);
+}
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len_sq = norm_sq(ab);
+  double t = len_sq > 0.0 ? dot(p - a, ab) / len_sq : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return distance(p, a + ab * t);
+}
+
+}  // namespace
+
+PolygonSet normalized(const PolygonSet& set, FillRule rule) {
+  cl::Clipper c;
+  c.AddPaths(to_paths(set), cl::ptSubject, true);
+  cl::Paths solution;
+  c.Execute(cl::ctUnion, solution, to_clipper(rule), to_clipper(rule));
+  return from_paths(std::move(solution));
+}
+
+PolygonSet unite(const PolygonSet& a, const PolygonSet& b) {
+  return boolean(cl::ctUnion, to_paths(a), to_paths(b));
+}
+
+PolygonSet unite(std::span<const PolygonSet> sets) {
+  // All rings as subjects of one union: normalized inputs wind +1 inside and 0 outside, so
+  // under the non-zero rule the union is exactly where any set winds non-zero.
+  cl::Paths all;
+  for (const PolygonSet& s : sets) {
+    cl::Paths p = to_paths(s);
+    all.insert(all.end(), std::make_move_iterator(p.begin()), std::make_move_iterator(p.end()));
+  }
+  return boolean(cl::ctUnion, all, {});
+}
+
+PolygonSet subtract(const PolygonSet& a, const PolygonSet& b) {
+  if (a.empty()) return {};
+  return boolean(cl::ctDifference, to_paths(a), to_paths(b));
+}
+
+PolygonSet intersect(const PolygonSet& a, const PolygonSet& b) {
+  if (a.empty() || b.empty()) return {};
+  return boolean(cl::ctIntersection, to_paths(a), to_paths(b));
+}
+
+PolygonSet intersect(std::span<const PolygonSet> sets) {
+  if (sets.empty()) return {};
+  PolygonSet acc = normalized(sets.front());
+  for (std::size_t i = 1; i < sets.size() && !acc.empty(); ++i)
+    acc = intersect(acc, sets[i]);
+  return acc;
+}
+
+PolygonSet offset(const PolygonSet& set, double delta_mm, const OffsetOptions& options) {
+  if (!std::isfinite(delta_mm) || delta_mm == 0.0) return normalized(set);
+  cl::ClipperOffset co(2.0, arc_tolerance_grid(options));
+  co.AddPaths(to_paths(set), cl::jtRound, cl::etClosedPolygon);
+  cl::Paths solution;
+  co.Execute(solution, delta_mm * kScale);
+  return from_paths(std::move(solution));
+}
+
+PolygonSet inflate_polylines(std::span<const Polyline2> lines, double radius_mm,
+                             const OffsetOptions& options) {
+  if (!std::isfinite(radius_mm) || radius_mm <= 0.0) return {};
+  cl::ClipperOffset co(2.0, arc_tolerance_grid(options));
+  for (const Polyline2& line : lines) {
+    const cl::Path p = to_path(line);
+    if (!p.empty()) co.AddPath(p, cl::jtRound, cl::etOpenRound);
+  }
+  cl::Paths solution;
+  co.Execute(solution, radius_mm * kScale);
+  return from_paths(std::move(solution));
+}
+
+double signed_area(const Ring& ring) {
+  if (ring.size() < 3) return 0.0;
+  // Shoelace relative to the first point: no cancellation far from the origin.
+  const Vec2 o = ring.front();
+  double twice = 0.0;
+  for (std::size_t i = 1; i + 1 < ring.size(); ++i)
+    twice += cross(ring[i] - o, ring[i + 1] - o);
+  return 0.5 * twice;
+}
+
+double area(const PolygonSet& set) {
+  double a = 0.0;
+  for (const Ring& r : set.rings)
+    a += signed_area(r);
+  return a;
+}
+
+Box2 bounds(const PolygonSet& set) {
+  Box2 b;
+  for (const Ring& r : set.rings)
+    for (const Vec2& p : r)
+      b.add(p);
+  return b;
+}
+
+double perimeter(const PolygonSet& set) {
+  double len = 0.0;
+  for (const Ring& r : set.rings)
+    for (std::size_t i = 0; i < r.size(); ++i)
+      len += distance(r[i], r[(i + 1) % r.size()]);
+  return len;
+}
+
+bool contains(const PolygonSet& set, Vec2 p) {
+  // Boundary first (points on an edge count as inside), then the non-zero winding number,
+  // which for a normalized set is 1 inside and 0 outside or in a hole.
+  constexpr double kOnBoundaryMm = 1e-9;
+  int winding = 0;
+  for (const Ring& r : set.rings) {
+    const std::size_t n = r.size();
+    if (n < 2) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = r[i], b = r[(i + 1) % n];
+      if (point_segment_distance(p, a, b) <= kOnBoundaryMm) return true;
+      if (a.y <= p.y) {
+        if (b.y > p.y && cross(b - a, p - a) > 0.0) ++winding;
+      } else if (b.y <= p.y && cross(b - a, p - a) < 0.0) {
+        --winding;
+      }
+    }
+  }
+  return winding != 0;
+}
+
+double distance_to_boundary(const PolygonSet& set, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Ring& r : set.rings) {
+    const std::size_t n = r.size();
+    for (std::size_t i = 0; i < n; ++i)
+      best = std::min(best, point_segment_distance(p, r[i], r[(i + 1) % n]));
+  }
+  return best;
+}
+
+std::vector<PolygonSet> connected_parts(const PolygonSet& set) {
+  cl::Clipper c;
+  c.AddPaths(to_paths(set), cl::ptSubject, true);
+  cl::PolyTree tree;
+  c.Execute(cl::ctUnion, tree, cl::pftNonZero, cl::pftNonZero);
+  std::vector<PolygonSet> parts;
+  collect_parts(tree, parts);
+  return parts;
+}
+
+}  // namespace swarf
