@@ -124,6 +124,16 @@ Result<ForceModel> ForceModel::create(const CutterGeometry& cutter, const Cuttin
     lv.lag_rad = lv.z_mm * tan_helix / radius;
     m.levels_.push_back(lv);
   }
+  m.cos_.resize(m.levels_.size() * static_cast<std::size_t>(m.steps_));
+  m.sin_.resize(m.cos_.size());
+  for (std::size_t lv = 0; lv < m.levels_.size(); ++lv) {
+    for (int i = 0; i < m.steps_; ++i) {
+      const double phi = m.angle_of(lv, i);
+      const std::size_t idx = lv * static_cast<std::size_t>(m.steps_) + static_cast<std::size_t>(i);
+      m.cos_[idx] = std::cos(phi);
+      m.sin_[idx] = std::sin(phi);
+    }
+  }
   return m;
 }
 
@@ -169,20 +179,27 @@ Vec3 ForceModel::element_force(std::size_t level, double phi, double h_mm) const
 }
 
 ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Vec3 feed_dir,
-                           const EngagementTest& inside) {
+                           const EngagementTest& inside, std::size_t max_levels) {
   const std::size_t steps = static_cast<std::size_t>(model.steps_per_rev());
-  const std::size_t n = model.levels().size() * steps;
+  const std::size_t used = std::min(max_levels, model.levels().size());
+  const std::size_t n = used * steps;
   ElementTable t;
+  t.levels_used = used;
   t.cutting.assign(n, Vec3{});
   t.edge.assign(n, Vec3{});
   t.engaged.assign(n, 0);
-  for (std::size_t k = 0; k < model.levels().size(); ++k) {
+  for (std::size_t k = 0; k < used; ++k) {
+    const EdgeLevel& lv = model.levels()[k];
+    const double sk = std::sin(lv.kappa_rad), ck = std::cos(lv.kappa_rad);
     for (std::size_t m = 0; m < steps; ++m) {
-      const double phi = model.angle_of(k, static_cast<int>(m));
+      const double c = model.cos_at(k, static_cast<int>(m)),
+                   s = model.sin_at(k, static_cast<int>(m));
       // seed 001 Eq. (3): h = S_t (n · f); only elements facing the feed cut.
-      const double h = feed_per_tooth_mm * dot(model.normal(k, phi), feed_dir);
+      const double h =
+          feed_per_tooth_mm * (sk * (c * feed_dir.x + s * feed_dir.y) - ck * feed_dir.z);
       if (!(h > 0.0)) continue;
-      if (!inside(k, model.point(k, phi))) continue;
+      if (!inside(k, {lv.radius_mm * c, lv.radius_mm * s, lv.z_mm})) continue;
+      const double phi = model.angle_of(k, static_cast<int>(m));
       const std::size_t idx = k * steps + m;
       model.element_force_parts(k, phi, h, t.cutting[idx], t.edge[idx]);
       t.engaged[idx] = 1;
@@ -195,7 +212,7 @@ void total_force_parts(const ForceModel& model, const ElementTable& table, long 
                        Vec3& edge) {
   const long steps = model.steps_per_rev();
   cutting = edge = {};
-  const std::size_t n_levels = model.levels().size();
+  const std::size_t n_levels = table.levels_used;
   for (int j = 0; j < model.cutter().flutes; ++j) {
     long m = (step + model.flute_offset(j)) % steps;
     if (m < 0) m += steps;

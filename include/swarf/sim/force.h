@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -90,6 +91,13 @@ class ForceModel {
   /// Element position relative to the tool tip and outward unit normal, at angle phi.
   Vec3 point(std::size_t level, double phi) const;
   Vec3 normal(std::size_t level, double phi) const;
+  /// cos and sin of angle_of(level, index), precomputed.
+  double cos_at(std::size_t level, int index) const {
+    return cos_[level * static_cast<std::size_t>(steps_) + static_cast<std::size_t>(index)];
+  }
+  double sin_at(std::size_t level, int index) const {
+    return sin_[level * static_cast<std::size_t>(steps_) + static_cast<std::size_t>(index)];
+  }
   /// Force on the tool from one element at angle phi cutting a chip of thickness h (Eq. 2, 4).
   /// h <= 0 gives zero (the element is not cutting).
   Vec3 element_force(std::size_t level, double phi, double h_mm) const;
@@ -102,6 +110,7 @@ class ForceModel {
   CuttingCoefficients k_;
   std::vector<EdgeLevel> levels_;
   std::vector<int> flute_offsets_;
+  std::vector<double> cos_, sin_;  ///< of angle_of(k, m), levels x steps
   int steps_ = 360;
   double dtheta_ = 0.0;
 };
@@ -116,9 +125,12 @@ struct ElementTable {
   std::vector<Vec3> cutting;  ///< parts proportional to the chip thickness
   std::vector<Vec3> edge;     ///< edge-force parts
   std::vector<unsigned char> engaged;
+  /// Levels evaluated (the rest are zero): those that can reach the stock.
+  std::size_t levels_used = 0;
 };
+/// `max_levels` limits the evaluation to the lowest levels (those that can reach material).
 ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Vec3 feed_dir,
-                           const EngagementTest& inside);
+                           const EngagementTest& inside, std::size_t max_levels = SIZE_MAX);
 
 /// Total force (Eq. 5) at rotation step `step`: the sum over levels and flutes.
 Vec3 total_force(const ForceModel& model, const ElementTable& table, long step);

@@ -1,0 +1,130 @@
+// End-to-end simulation: removal, engagement and forces together against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "swarf/sim/simulate.h"
+
+namespace swarf::sim {
+namespace {
+
+CuttingCoefficients al7075() {
+  CuttingCoefficients k;
+  k.ktc_n_mm2 = 796.0;
+  k.krc_n_mm2 = 168.0;
+  k.kac_n_mm2 = 222.0;
+  k.kte_n_mm = 27.7;
+  k.kre_n_mm = 30.8;
+  k.kae_n_mm = 2.3;
+  return k;
+}
+
+Tool flat10() {
+  Tool t = flat_mill(10.0);
+  t.flutes = 4;
+  t.helix_angle_deg = 30.0;
+  t.flute_length_mm = 10.0;
+  return t;
+}
+
+// A slot 2 mm deep along +x through the block's x = 0 face, ending at x = 40.
+Toolpath slot_path(double feed) {
+  Toolpath p;
+  p.spindle_rpm = 3000.0;
+  p.rapid_to({-10, 20, 25});
+  p.rapid_to({-10, 20, 18});
+  p.feed_to({40, 20, 18}, feed);
+  p.rapid_to({40, 20, 25});
+  return p;
+}
+
+Stock block() {
+  return std::move(Stock::block({{0, 0, 0}, {60, 40, 20}}, 0.1)).value();
+}
+
+TEST(Simulate, SlotVolumeAndMeanForceMatchClosedForms) {
+  Stock stock = block();
+  const double feed = 0.1 * 3000 * 4;  // 0.1 mm per tooth
+  SimulationOptions opt;
+  const auto r = simulate(stock, slot_path(feed), flat10(), al7075(), opt);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  EXPECT_TRUE(r->collisions.empty());
+  const double want_v = 2.0 * (10.0 * 40.0 + kPi * 25.0 / 2.0);
+  EXPECT_NEAR(r->removed_mm3, want_v, 0.005 * want_v);
+  EXPECT_NEAR(r->moves[2].removed_mm3, want_v, 0.005 * want_v);
+  // Mean force over the steady part of the slot (x in 15..35) against Altintas' slotting
+  // mean: Fx = -N a ft Krc / 4 - N a Kre / π, Fy = N a ft Ktc / 4 + N a Kte / π.
+  const double n = 4, a = 2, ft = 0.1;
+  const CuttingCoefficients k = al7075();
+  const Vec3 want{-n * a * ft * k.krc_n_mm2 / 4 - n * a * k.kre_n_mm / kPi,
+                  n * a * ft * k.ktc_n_mm2 / 4 + n * a * k.kte_n_mm / kPi,
+                  -n * a / (2 * kPi) * (2 * k.kac_n_mm2 * ft + k.kae_n_mm * kPi)};
+  const double t_in = r->moves[2].t_start_s + 25.0 / feed * 60.0;
+  const double t_out = r->moves[2].t_start_s + 45.0 / feed * 60.0;
+  Vec3 sum;
+  int count = 0;
+  for (const ForceSample& s : r->samples) {
+    if (s.t_s < t_in || s.t_s >= t_out) continue;
+    sum += s.force_n;
+    ++count;
+  }
+  ASSERT_GT(count, 1000);
+  const Vec3 mean = sum / count;
+  const double scale = norm(want);
+  EXPECT_NEAR(mean.x, want.x, 0.02 * scale);
+  EXPECT_NEAR(mean.y, want.y, 0.02 * scale);
+  EXPECT_NEAR(mean.z, want.z, 0.02 * scale);
+  // Annotations: the cutting move carries its peak force and a 180° engaged arc (slot).
+  EXPECT_NEAR(r->annotated.moves[2].force_n, r->moves[2].peak_force_n, 1e-3);
+  EXPECT_NEAR(r->moves[2].engaged_arc_deg, 180.0, 2.0);
+  EXPECT_TRUE(std::isnan(r->annotated.moves[0].force_n));
+  // The floor of the slot is at 18, the untouched top at 20.
+  const HeightMap hm = stock.height_map(0.5);
+  EXPECT_NEAR(hm.top[static_cast<std::size_t>(40) * hm.nx + 40], 18.0, 1e-6);  // (20.25, 20.25)
+  EXPECT_NEAR(hm.top[static_cast<std::size_t>(70) * hm.nx + 40], 20.0, 1e-6);  // (20.25, 35.25)
+}
+
+TEST(Simulate, RapidIntoMaterialIsACollision) {
+  Stock stock = block();
+  Toolpath p;
+  p.spindle_rpm = 3000;
+  p.rapid_to({10, 10, 25});
+  p.rapid_to({10, 10, 15});  // plunges 5 mm at rapid
+  const auto r = simulate(stock, p, flat10(), al7075(), {});
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(r->collisions.size(), 1u);
+  EXPECT_TRUE(r->moves[1].collision);
+  EXPECT_NEAR(r->moves[1].removed_mm3, kPi * 25 * 5, 0.005 * kPi * 25 * 5);
+}
+
+TEST(Simulate, ScheduledFeedKeepsThePeakUnderTheLimit) {
+  const double feed = 0.1 * 3000 * 4;
+  Stock s1 = block();
+  SimulationOptions opt;
+  opt.sample_stride = 10;
+  const auto r1 = simulate(s1, slot_path(feed), flat10(), al7075(), opt);
+  ASSERT_TRUE(r1.ok());
+  const double limit = 0.6 * r1->peak_force_n;
+  FeedScheduleOptions fo;
+  fo.max_force_n = limit;
+  const FeedSchedule fs = schedule_feed(slot_path(feed), *r1, fo);
+  EXPECT_LT(fs.path.moves[2].feed_mm_min, feed);
+  EXPECT_GT(fs.time_after_s, fs.time_before_s);
+  // Re-simulated with the new feeds on fresh stock, the peak meets the limit.
+  Stock s2 = block();
+  const auto r2 = simulate(s2, fs.path, flat10(), al7075(), opt);
+  ASSERT_TRUE(r2.ok());
+  EXPECT_LT(r2->peak_force_n, 1.02 * limit);
+  EXPECT_GT(r2->peak_force_n, 0.9 * limit);
+}
+
+TEST(Simulate, MissingFeedIsAnError) {
+  Stock stock = block();
+  Toolpath p;
+  p.rapid_to({10, 10, 25});
+  p.feed_to({20, 10, 25}, 0.0);
+  EXPECT_EQ(simulate(stock, p, flat10(), al7075(), {}).status().code(), Error::kBadInput);
+}
+
+}  // namespace
+}  // namespace swarf::sim
