@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
 #include "sim/sections.h"
 #include "swarf/core/parallel.h"
+#include "swarf/mesh/slice.h"
+#include "swarf/mesh/stl.h"
 #include "swarf/polygon/polygon.h"
 
 namespace swarf::sim {
@@ -89,6 +92,62 @@ Result<Stock> Stock::block(const Box3& box, double pitch_mm) {
     f.slices.assign(static_cast<std::size_t>(count), PolygonSet{{r}});
   }
   return from_model(std::move(m));
+}
+
+Result<Stock> Stock::from_mesh(const Mesh& mesh, double pitch_mm, const Context& ctx) {
+  if (mesh.empty()) return bad_input("stock mesh: no triangles");
+  if (!(pitch_mm > 0.0)) return bad_parameter("stock mesh: slice pitch must be positive");
+  const Box3 box = swarf::bounds(mesh);
+  TriSliceModel m;
+  m.bounds = box;
+  m.pitch_mm = pitch_mm;
+  for (int a = 0; a < 3; ++a) {
+    const Axis axis = static_cast<Axis>(a);
+    const double count = std::ceil((box.max[a] - box.min[a]) / pitch_mm - 1e-9);
+    if (count > 200000 || count < 1) {
+      return bad_parameter("stock mesh: " + std::to_string(count) + " slices along one axis");
+    }
+    SliceFamily& f = m.family(axis);
+    f.axis = axis;
+    f.pitch_mm = pitch_mm;
+    f.first_level = box.min[a] + 0.5 * pitch_mm;
+    std::vector<double> levels(static_cast<std::size_t>(count));
+    for (std::size_t j = 0; j < levels.size(); ++j)
+      levels[j] = f.level(j);
+    f.slices = slice_mesh(mesh, axis, levels, {}, ctx);
+  }
+  return from_model(std::move(m));
+}
+
+Result<Stock> Stock::from_spec(const std::string& spec, double pitch_mm, const Context& ctx) {
+  if (spec.rfind("box:", 0) == 0) {
+    std::vector<double> v;
+    std::size_t start = 4;
+    while (start <= spec.size()) {
+      const std::size_t comma = std::min(spec.find(',', start), spec.size());
+      const std::string cell = spec.substr(start, comma - start);
+      char* end = nullptr;
+      const double x = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || end != cell.c_str() + cell.size() || !std::isfinite(x)) {
+        return bad_parameter("stock \"" + spec + "\": \"" + cell + "\" is not a number");
+      }
+      v.push_back(x);
+      start = comma + 1;
+    }
+    if (v.size() != 6) {
+      return bad_parameter("stock \"" + spec + "\": need box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX");
+    }
+    const Box3 box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    Result<Stock> s = block(box, pitch_mm);
+    if (!s.ok()) return s.status().with_context("stock \"" + spec + "\"");
+    return s;
+  }
+  Result<StlFile> stl = read_stl(spec);
+  if (!stl.ok()) return stl.status();
+  if (!stl->check.closed()) {
+    return Status{Error::kOpenMesh, spec + ": the stock mesh is not closed"};
+  }
+  return from_mesh(stl->mesh, pitch_mm, ctx);
 }
 
 Result<Stock> Stock::from_model(TriSliceModel model) {

@@ -6,11 +6,13 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "swarf/core/context.h"
 #include "swarf/core/status.h"
 #include "swarf/core/vec.h"
+#include "swarf/mesh/mesh.h"
 #include "swarf/tool/tool.h"
 #include "swarf/trislice/model.h"
 
@@ -61,6 +63,13 @@ class Stock {
   /// of the block (and of any cut at a whole number of pitches from them) fall on cell
   /// boundaries. This is sim's own block builder (the trislice area owns trislice_block).
   static Result<Stock> block(const Box3& box, double pitch_mm);
+  /// A closed mesh sliced in the three families at `pitch_mm`, with the same level placement
+  /// as block() over the mesh's bounds (slices through swarf/mesh/slice.h).
+  static Result<Stock> from_mesh(const Mesh& mesh, double pitch_mm,
+                                 const Context& ctx = default_context());
+  /// "box:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX" or the path of an STL file.
+  static Result<Stock> from_spec(const std::string& spec, double pitch_mm,
+                                 const Context& ctx = default_context());
   /// Any tri-slice model, e.g. an STL sliced by build_trislice. The three families must
   /// share one pitch.
   static Result<Stock> from_model(TriSliceModel model);
