@@ -26,7 +26,7 @@ std::vector<Param> simulate_params() {
       {"axial_step", ParamType::kNumber, 0.1, "axial resolution of the cutting edge, mm"},
       {"angle_step", ParamType::kNumber, 1.0, "rotation step, degrees"},
       {"step", ParamType::kNumber, 0.0, "tool advance per engagement evaluation, mm (0: pitch)"},
-      {"batch", ParamType::kNumber, 1.0, "tool advance per stock update, mm"},
+      {"batch", ParamType::kNumber, 2.0, "tool advance per stock update, mm"},
       {"engagement", ParamType::kString, "majority",
        "how the three slice families vote on an edge point: majority or any (the paper)"},
       {"force_limit", ParamType::kNumber, 0.0,

@@ -199,9 +199,13 @@ ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Ve
           feed_per_tooth_mm * (sk * (c * feed_dir.x + s * feed_dir.y) - ck * feed_dir.z);
       if (!(h > 0.0)) continue;
       if (!inside(k, {lv.radius_mm * c, lv.radius_mm * s, lv.z_mm})) continue;
-      const double phi = model.angle_of(k, static_cast<int>(m));
       const std::size_t idx = k * steps + m;
-      model.element_force_parts(k, phi, h, t.cutting[idx], t.edge[idx]);
+      // Eq. (2) and (4) as in element_force_parts, with the precomputed cos and sin.
+      const Vec3 v{s, -c, 0.0}, nrm{sk * c, sk * s, -ck}, mer{-ck * c, -ck * s, -sk};
+      const CuttingCoefficients& kc = model.coefficients();
+      t.cutting[idx] =
+          (v * (-kc.ktc_n_mm2) - nrm * kc.krc_n_mm2 + mer * kc.kac_n_mm2) * (h * lv.db_mm);
+      t.edge[idx] = (v * (-kc.kte_n_mm) - nrm * kc.kre_n_mm + mer * kc.kae_n_mm) * lv.db_mm;
       t.engaged[idx] = 1;
     }
   }

@@ -259,12 +259,14 @@ bool Stock::inside(Vec3 p, Axis family) const {
 }
 
 bool Stock::inside(Vec3 p, EngagementRule rule) const {
+  const int needed = rule == EngagementRule::kAny ? 1 : 2;
   int votes = 0;
-  for (int a = 0; a < 3; ++a) {
+  // The xy family first: it decides most points of a 3-axis cut on its own.
+  for (int a : {2, 0, 1}) {
     if (inside(p, static_cast<Axis>(a))) {
-      ++votes;
-      if (rule == EngagementRule::kAny) return true;
-      if (votes >= 2) return true;
+      if (++votes >= needed) return true;
+    } else if (rule == EngagementRule::kMajority && a == 0 && votes == 0) {
+      return false;  // two outside votes already
     }
   }
   return false;

@@ -24,7 +24,7 @@ struct SimulationOptions {
   /// Tool advance collected before one subtraction from the stock, mm. Engagement is tested
   /// against the stock as it was before the batch: exact for the edge points that cut
   /// (they face the feed and lie outside the solid already swept along a straight move).
-  double batch_mm = 1.0;
+  double batch_mm = 2.0;
   /// Spindle speed, rpm; 0 takes the toolpath's.
   double spindle_rpm = 0.0;
   /// Rapid traverse rate for the clock, mm/min.
