@@ -84,6 +84,52 @@ TEST(Simulate, SlotVolumeAndMeanForceMatchClosedForms) {
   EXPECT_NEAR(hm.top[static_cast<std::size_t>(70) * hm.nx + 40], 20.0, 1e-6);  // (20.25, 35.25)
 }
 
+TEST(Simulate, SideCutEngagedArcAndMeanForceMatchDownMilling) {
+  // 2 mm radial depth into the block's y = 40 face, 3 mm deep, feed +x: material on -y of
+  // the axis, i.e. down milling from θ = π - acos(1 - 2/5) to π (θ clockwise from +y).
+  Stock stock = block();
+  const double feed = 0.1 * 3000 * 4;
+  Toolpath p;
+  p.spindle_rpm = 3000.0;
+  p.rapid_to({-10, 43, 25});
+  p.rapid_to({-10, 43, 17});
+  p.feed_to({50, 43, 17}, feed);
+  const auto r = simulate(stock, p, flat10(), al7075(), {});
+  ASSERT_TRUE(r.ok());
+  const double st = kPi - std::acos(1.0 - 2.0 / 5.0);
+  EXPECT_NEAR(r->moves[2].engaged_arc_deg, rad_to_deg(kPi - st), 1.5);
+  const CuttingCoefficients k = al7075();
+  const double n = 4, a = 3, ft = 0.1;
+  auto f = [&](double t) {
+    return Vec3{n * a * ft / (8 * kPi) *
+                        (k.ktc_n_mm2 * std::cos(2 * t) - k.krc_n_mm2 * (2 * t - std::sin(2 * t))) +
+                    n * a / (2 * kPi) * (-k.kte_n_mm * std::sin(t) + k.kre_n_mm * std::cos(t)),
+                n * a * ft / (8 * kPi) *
+                        (k.ktc_n_mm2 * (2 * t - std::sin(2 * t)) + k.krc_n_mm2 * std::cos(2 * t)) -
+                    n * a / (2 * kPi) * (k.kte_n_mm * std::cos(t) + k.kre_n_mm * std::sin(t)),
+                -n * a / (2 * kPi) * (-k.kac_n_mm2 * ft * std::cos(t) + k.kae_n_mm * t)};
+  };
+  const Vec3 want = f(kPi) - f(st);
+  Vec3 sum;
+  int count = 0;
+  const double t0 = r->moves[2].t_start_s;
+  for (const ForceSample& s : r->samples) {
+    if (s.t_s < t0 + 20.0 / feed * 60.0 || s.t_s >= t0 + 40.0 / feed * 60.0) continue;
+    sum += s.force_n;
+    ++count;
+  }
+  ASSERT_GT(count, 1000);
+  const Vec3 mean = sum / count;
+  EXPECT_NEAR(mean.x, want.x, 0.02 * norm(want));
+  EXPECT_NEAR(mean.y, want.y, 0.02 * norm(want));
+  EXPECT_NEAR(mean.z, want.z, 0.02 * norm(want));
+  // The strip y 38..40 cut off the face from x = 0 to 50, plus the part of the end disk
+  // (centre (50, 43), radius 5) inside the strip: the integral of sqrt(25 - u^2), u 3..5.
+  auto prim = [](double u) { return u / 2 * std::sqrt(25 - u * u) + 12.5 * std::asin(u / 5); };
+  const double want_v = 3.0 * (2.0 * 50.0 + prim(5) - prim(3));
+  EXPECT_NEAR(r->removed_mm3, want_v, 0.005 * want_v);
+}
+
 TEST(Simulate, RapidIntoMaterialIsACollision) {
   Stock stock = block();
   Toolpath p;

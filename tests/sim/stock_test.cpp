@@ -91,6 +91,21 @@ TEST(StockRemoval, CircularPocket) {
   expect_volume(rm, kPi * (ring + r) * (ring + r) * depth);
 }
 
+TEST(StockRemoval, BullNoseSlot) {
+  Stock s = block();
+  const double r = 5, rc = 2, len = 20, d = 3;
+  const Vec3 tips[2] = {{15, 10, 20 - d}, {15 + len, 10 + len, 20 - d}};  // diagonal
+  const Removal rm = s.remove(ToolSolid{r, rc}, tips);
+  // Section through the axis: a d-deep rectangle 2r wide less two corner spandrels; the two
+  // ends together make the tool's own solid below depth d, its corner ring by Pappus.
+  const double spandrel = rc * rc * (1 - kPi / 4);
+  const double section = 2 * r * d - 2 * spandrel;
+  const double centroid_r = r - rc + rc / (6 - 1.5 * kPi);
+  const double solid = kPi * r * r * d - 2 * kPi * centroid_r * spandrel;
+  const double want = len * std::sqrt(2.0) * section + solid;
+  EXPECT_NEAR(rm.volume_mm3, want, 0.005 * want);
+}
+
 TEST(StockRemoval, SecondPassRemovesNothing) {
   Stock s = block();
   const Vec3 tips[2] = {{10, 20, 18}, {40, 20, 18}};
