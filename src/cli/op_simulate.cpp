@@ -40,8 +40,7 @@ std::vector<Param> simulate_params() {
 
 Result<SimulationSetup> prepare_simulation(const OperationInput& in) {
   const json& p = in.params;
-  Result<Toolpath> program = read_gcode(in.input_path);
-  if (!program.ok()) return program.status();
+
   sim::CuttingCoefficients k;
   const std::string kpath = p["coefficients"].get<std::string>();
   if (!kpath.empty()) {
@@ -72,6 +71,12 @@ Result<SimulationSetup> prepare_simulation(const OperationInput& in) {
   const Context& ctx = in.ctx != nullptr ? *in.ctx : default_context();
   Result<sim::Stock> stock = sim::Stock::from_spec(p["stock"].get<std::string>(), pitch, ctx);
   if (!stock.ok()) return stock.status();
+  // The machine starts 10 mm above the stock at the origin, so a program whose first block
+  // positions only X and Y does not drag the tool through the stock.
+  GcodeReadOptions ro;
+  ro.start = {0.0, 0.0, stock->bounds().max.z + 10.0};
+  Result<Toolpath> program = read_gcode(in.input_path, ro);
+  if (!program.ok()) return program.status();
   return SimulationSetup{std::move(program).value(), *in.tool, std::move(stock).value(), k, o};
 }
 

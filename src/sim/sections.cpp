@@ -96,7 +96,7 @@ PolygonSet lower_envelope(const std::vector<PolygonSet>& parts, Axis axis, doubl
     chains.push_back(std::move(c));
   }
   if (chains.empty()) return {};
-  constexpr double kStep = 0.01, kEps = 1e-6;
+  constexpr double kStep = 0.025, kEps = 1e-6;
   std::vector<double> xs;
   for (double x = lo; x < hi; x += kStep)
     xs.push_back(x);
@@ -139,6 +139,18 @@ PolygonSet lower_envelope(const std::vector<PolygonSet>& parts, Axis axis, doubl
       ++k;
     }
     ring.push_back({ring.back().x, top});
+    // Drop samples on straight stretches (a flat bottom, a vertical wall): the slices stay
+    // small, and so do the subtraction and the point queries that follow.
+    Ring kept;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (!kept.empty() && i + 1 < ring.size() &&
+          std::abs(cross(ring[i] - kept.back(), ring[i + 1] - kept.back())) <=
+              1e-9 * norm(ring[i + 1] - kept.back())) {
+        continue;
+      }
+      kept.push_back(ring[i]);
+    }
+    ring = std::move(kept);
     if (swap) {
       for (Vec2& p : ring)
         p = {p.y, p.x};

@@ -84,6 +84,60 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
   double t = 0.0;
   double force_sum = 0.0;
   std::size_t force_count = 0;
+
+  // Removal is deferred into a pending polyline and done in one subtraction per slice when
+  // it reaches batch_mm, turns by more than 15° (engagement is tested against the stock
+  // before the pending part: exact for the cutting elements on a straight run), switches
+  // between rapid and feed, or a move longer than a step ends. Runs of tiny moves (a
+  // finishing contour in 0.01 mm blocks) share batches; their volume is split by length.
+  struct Pending {
+    std::vector<Vec3> pts;
+    double len = 0.0;
+    Vec3 dir;
+    bool rapid = false;
+    std::vector<std::pair<std::size_t, double>> owners;  // move index, length in the batch
+  } pend;
+  const double cos_turn = std::cos(deg_to_rad(15.0));
+  auto flush = [&]() {
+    if (pend.pts.size() >= 2) {
+      const Removal rm = stock.remove(solid, pend.pts, ctx);
+      for (int a = 0; a < 3; ++a)
+        res.removed_by_family_mm3[a] += rm.by_family_mm3[a];
+      for (const auto& [m, l] : pend.owners) {
+        res.moves[m].removed_mm3 += rm.volume_mm3 * (pend.len > 0.0 ? l / pend.len : 0.0);
+      }
+    }
+    pend = Pending{};
+  };
+  auto append = [&](const std::vector<Vec3>& piece, std::size_t mi, bool rapid) {
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) {
+      const Vec3 a = piece[i], b = piece[i + 1];
+      const double l = distance(a, b);
+      if (!(l > 0.0)) continue;
+      const Vec3 d = (b - a) / l;
+      if (!pend.pts.empty() &&
+          (pend.rapid != rapid || pend.len >= opt.batch_mm || dot(d, pend.dir) < cos_turn)) {
+        flush();
+      }
+      if (pend.pts.empty()) {
+        pend.pts.push_back(a);
+        pend.dir = d;
+        pend.rapid = rapid;
+      }
+      // Collinear pieces extend the last segment: one straight segment per slice is one
+      // convex section instead of many to unite.
+      const std::size_t np = pend.pts.size();
+      if (np >= 2 && dot(normalized(pend.pts[np - 1] - pend.pts[np - 2]), d) > 1.0 - 1e-12) {
+        pend.pts.back() = b;
+      } else {
+        pend.pts.push_back(b);
+      }
+      pend.len += l;
+      if (pend.owners.empty() || pend.owners.back().first != mi) pend.owners.push_back({mi, 0.0});
+      pend.owners.back().second += l;
+    }
+  };
+
   for (std::size_t mi = 0; mi < path.moves.size(); ++mi) {
     if (ctx.cancelled()) return Status{Error::kCancelled, "simulate: cancelled"};
     ctx.report("simulate", static_cast<double>(mi) / static_cast<double>(path.moves.size()));
@@ -103,71 +157,64 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
     const double ft = rapid ? 0.0 : mv.feed_mm_min / (rpm * flutes);
     double peak = 0.0, sum = 0.0;
     std::size_t count = 0;
-    if (len > 0.0) {
-      const auto n_batches = static_cast<std::size_t>(std::ceil(len / opt.batch_mm - 1e-9));
-      for (std::size_t b = 0; b < n_batches; ++b) {
-        const double sa = len * static_cast<double>(b) / static_cast<double>(n_batches);
-        const double sb = len * static_cast<double>(b + 1) / static_cast<double>(n_batches);
-        if (!rapid && opt.compute_forces) {
-          const auto n_ref = static_cast<std::size_t>(std::ceil((sb - sa) / opt.step_mm - 1e-9));
-          for (std::size_t r = 0; r < n_ref; ++r) {
-            const double ra = sa + (sb - sa) * static_cast<double>(r) / static_cast<double>(n_ref);
-            const double rb =
-                sa + (sb - sa) * static_cast<double>(r + 1) / static_cast<double>(n_ref);
-            // Engagement at the middle of the step, against the stock before this batch.
-            const Vec3 mid = line.at(0.5 * (ra + rb));
-            const Vec3 dir = line.direction_at(0.5 * (ra + rb));
-            std::size_t used = 0;
-            while (used < model.levels().size() &&
-                   mid.z + model.levels()[used].z_mm <= stock_top + stock.pitch_mm()) {
-              ++used;
+    if (len > 0.0 && rapid) {
+      append(line.pts, mi, true);
+    } else if (len > 0.0) {
+      const auto n_ref = static_cast<std::size_t>(std::ceil(len / opt.step_mm - 1e-9));
+      for (std::size_t r = 0; r < n_ref; ++r) {
+        const double ra = len * static_cast<double>(r) / static_cast<double>(n_ref);
+        const double rb = len * static_cast<double>(r + 1) / static_cast<double>(n_ref);
+        if (opt.compute_forces) {
+          // seed 001 Fig. 10b: engagement at the middle of the step, against the stock before
+          // the pending removal.
+          const Vec3 mid = line.at(0.5 * (ra + rb));
+          const Vec3 dir = line.direction_at(0.5 * (ra + rb));
+          std::size_t used = 0;
+          while (used < model.levels().size() &&
+                 mid.z + model.levels()[used].z_mm <= stock_top + stock.pitch_mm()) {
+            ++used;
+          }
+          const ElementTable table = element_table(
+              model, ft, dir,
+              [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used);
+          for (std::size_t lv = 0; lv < table.levels_used; ++lv) {
+            mr.engaged_arc_deg = std::max(mr.engaged_arc_deg, engaged_arc_deg(model, table, lv));
+          }
+          // seed 001 Eq. (5) at every rotation step whose time falls in this step.
+          const double ta = t + ra / speed * 60.0, tb = t + rb / speed * 60.0;
+          const auto i0 = static_cast<long>(std::ceil(ta / dt - 1e-9));
+          const auto i1 = static_cast<long>(std::ceil(tb / dt - 1e-9));
+          for (long i = i0; i < i1; ++i) {
+            Vec3 c, e;
+            total_force_parts(model, table, i, c, e);
+            const Vec3 f = c + e;
+            const double mag = norm(f);
+            if (mag > peak) {
+              peak = mag;
+              mr.peak_cutting_n = c;
+              mr.peak_edge_n = e;
             }
-            const ElementTable table = element_table(
-                model, ft, dir,
-                [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used);
-            for (std::size_t lv = 0; lv < table.levels_used; ++lv) {
-              mr.engaged_arc_deg = std::max(mr.engaged_arc_deg, engaged_arc_deg(model, table, lv));
+            sum += mag;
+            ++count;
+            if (mag > 0.0) {
+              res.cutting_time_s += dt;
+              force_sum += mag;
+              ++force_count;
             }
-            const double ta = t + ra / speed * 60.0, tb = t + rb / speed * 60.0;
-            const auto i0 = static_cast<long>(std::ceil(ta / dt - 1e-9));
-            const auto i1 = static_cast<long>(std::ceil(tb / dt - 1e-9));
-            for (long i = i0; i < i1; ++i) {
-              Vec3 c, e;
-              total_force_parts(model, table, i, c, e);
-              const Vec3 f = c + e;
-              const double mag = norm(f);
-              if (mag > peak) {
-                peak = mag;
-                mr.peak_cutting_n = c;
-                mr.peak_edge_n = e;
-              }
-              sum += mag;
-              ++count;
-              if (mag > 0.0) {
-                res.cutting_time_s += dt;
-                force_sum += mag;
-                ++force_count;
-              }
-              if (opt.force_limit_n > 0.0 && mag > opt.force_limit_n) {
-                res.time_above_limit_s += dt;
-              }
-              res.peak_abs_n = {std::max(res.peak_abs_n.x, std::abs(f.x)),
-                                std::max(res.peak_abs_n.y, std::abs(f.y)),
-                                std::max(res.peak_abs_n.z, std::abs(f.z))};
-              if (i % opt.sample_stride == 0) {
-                res.samples.push_back(
-                    {static_cast<double>(i) * dt, f, static_cast<std::uint32_t>(mi)});
-              }
+            if (opt.force_limit_n > 0.0 && mag > opt.force_limit_n) res.time_above_limit_s += dt;
+            res.peak_abs_n = {std::max(res.peak_abs_n.x, std::abs(f.x)),
+                              std::max(res.peak_abs_n.y, std::abs(f.y)),
+                              std::max(res.peak_abs_n.z, std::abs(f.z))};
+            if (i % opt.sample_stride == 0) {
+              res.samples.push_back(
+                  {static_cast<double>(i) * dt, f, static_cast<std::uint32_t>(mi)});
             }
           }
         }
-        const std::vector<Vec3> batch = line.between(sa, sb);
-        const Removal rm = stock.remove(solid, batch, ctx);
-        mr.removed_mm3 += rm.volume_mm3;
-        for (int a = 0; a < 3; ++a)
-          res.removed_by_family_mm3[a] += rm.by_family_mm3[a];
+        append(line.between(ra, rb), mi, false);
       }
     }
+    if (rapid || len >= opt.step_mm) flush();
     if (rapid && mr.removed_mm3 > opt.collision_volume_mm3) {
       mr.collision = true;
       char buf[160];
@@ -179,7 +226,6 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
     mr.peak_force_n = peak;
     mr.mean_force_n = count > 0 ? sum / static_cast<double>(count) : 0.0;
     res.peak_force_n = std::max(res.peak_force_n, peak);
-    res.removed_mm3 += mr.removed_mm3;
     t += len / speed * 60.0;
     mr.t_end_s = t;
     Move& am = res.annotated.moves[mi];
@@ -189,6 +235,9 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
     }
     pos = mv.end;
   }
+  flush();
+  for (const MoveResult& m : res.moves)
+    res.removed_mm3 += m.removed_mm3;
   res.machining_time_s = t;
   res.mean_force_n = force_count > 0 ? force_sum / static_cast<double>(force_count) : 0.0;
   return res;

@@ -130,6 +130,47 @@ TEST(Simulate, SideCutEngagedArcAndMeanForceMatchDownMilling) {
   EXPECT_NEAR(r->removed_mm3, want_v, 0.005 * want_v);
 }
 
+// A circular pocket: plunge at the centre, out to a 6 mm circle, round it, as arcs or as a
+// run of tiny G1 chords; the pocket is a disk of radius 6 + 5, 3 mm deep either way.
+Toolpath circle_pocket(bool chords) {
+  Toolpath p;
+  p.spindle_rpm = 3000.0;
+  const Vec3 c{30, 20, 17};
+  p.rapid_to(c + Vec3{0, 0, 8});
+  p.plunge_to(c.z, 300.0);
+  p.feed_to(c + Vec3{6, 0, 0}, 800.0);
+  if (chords) {
+    const int n = 754;  // 0.05 mm chords
+    for (int i = 1; i <= n; ++i) {
+      const double a = 2 * kPi * i / n;
+      p.feed_to(c + Vec3{6 * std::cos(a), 6 * std::sin(a), 0}, 800.0);
+    }
+  } else {
+    p.arc_to(c + Vec3{-6, 0, 0}, c.xy(), false, 800.0);
+    p.arc_to(c + Vec3{6, 0, 0}, c.xy(), false, 800.0);
+  }
+  p.rapid_to(c + Vec3{6, 0, 8});
+  return p;
+}
+
+TEST(Simulate, CircularPocketFromArcsAndFromTinyMoves) {
+  const double want = kPi * 11 * 11 * 3;
+  for (bool chords : {false, true}) {
+    Stock stock = block();
+    SimulationOptions opt;
+    opt.sample_stride = 50;
+    const auto r = simulate(stock, circle_pocket(chords), flat10(), al7075(), opt);
+    ASSERT_TRUE(r.ok());
+    EXPECT_NEAR(r->removed_mm3, want, 0.005 * want) << (chords ? "chords" : "arcs");
+    double per_move = 0.0;
+    for (const MoveResult& m : r->moves)
+      per_move += m.removed_mm3;
+    EXPECT_NEAR(per_move, r->removed_mm3, 1e-6 * want);
+    EXPECT_TRUE(r->collisions.empty());
+    EXPECT_NEAR(stock.volume_mm3(), 60.0 * 40 * 20 - want, 0.005 * want);
+  }
+}
+
 TEST(Simulate, RapidIntoMaterialIsACollision) {
   Stock stock = block();
   Toolpath p;
