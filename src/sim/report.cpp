@@ -1,6 +1,7 @@
 // Simulation outputs: the force waveform as CSV and SVG (as seed 001 Fig. 18-19), per-move
 // results, and the machined stock's height map as CSV and PNG.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -11,14 +12,30 @@
 
 namespace swarf::sim {
 
+namespace {
+
+// std::to_chars: several times faster than printf for the hundreds of thousands of rows of a
+// waveform, and locale-independent.
+void append_fixed(std::string& out, double v, int digits) {
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, digits);
+  out.append(buf, res.ptr);
+}
+
+}  // namespace
+
 std::string forces_csv(const SimulationResult& r) {
   std::string out = "t_s,fx_n,fy_n,fz_n,f_n,move\n";
   out.reserve(out.size() + r.samples.size() * 48);
-  char buf[160];
   for (const ForceSample& s : r.samples) {
-    std::snprintf(buf, sizeof buf, "%.6f,%.3f,%.3f,%.3f,%.3f,%u\n", s.t_s, s.force_n.x, s.force_n.y,
-                  s.force_n.z, norm(s.force_n), s.move + 1);
-    out += buf;
+    append_fixed(out, s.t_s, 6);
+    for (double v : {s.force_n.x, s.force_n.y, s.force_n.z, norm(s.force_n)}) {
+      out += ',';
+      append_fixed(out, v, 3);
+    }
+    out += ',';
+    out += std::to_string(s.move + 1);
+    out += '\n';
   }
   return out;
 }
