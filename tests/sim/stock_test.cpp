@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/sections.h"
+#include "swarf/mesh/generate.h"
 #include "swarf/sim/stock.h"
 
 namespace swarf::sim {
@@ -112,6 +113,32 @@ TEST(StockRemoval, SecondPassRemovesNothing) {
   s.remove(ball(8), tips);
   const Removal again = s.remove(ball(8), tips);
   EXPECT_LT(again.volume_mm3, 1e-6);
+}
+
+TEST(StockRemoval, MeshStockMatchesItsVolume) {
+  // A 64-sided prism: its exact volume is the polygon area times the height.
+  const Mesh m = make_cylinder({20, 20, 0}, 10.0, 15.0, 64);
+  const auto s = Stock::from_mesh(m, kPitch);
+  ASSERT_TRUE(s.ok()) << s.status().to_string();
+  const double want = 0.5 * 64 * 100.0 * std::sin(2 * kPi / 64) * 15.0;
+  EXPECT_NEAR(s->volume_mm3(), want, 0.005 * want);
+  EXPECT_TRUE(s->inside({20, 20, 7}, EngagementRule::kMajority));
+  EXPECT_FALSE(s->inside({29.99, 29.99, 7.5}, EngagementRule::kMajority));  // 14 mm out
+}
+
+TEST(StockRemoval, MajorityVoteResolvesAFloorBetweenSlices) {
+  // A floor at z = 18.07 lies between the xy slices at 18.05 (below it, still material) and
+  // 18.15 (cut away). A point 0.01 above the floor is nearest to the 18.05 slice, so the xy
+  // family alone (and the paper's any-family rule) calls it material; the yz and zx slices
+  // cut the floor exactly and outvote it.
+  Stock s = block();
+  const Vec3 tips[2] = {{10, 20, 18.07}, {40, 20, 18.07}};
+  s.remove(flat(10), tips);
+  const Vec3 p{25, 20, 18.08};
+  EXPECT_TRUE(s.inside(p, Axis::kZ));
+  EXPECT_TRUE(s.inside(p, EngagementRule::kAny));
+  EXPECT_FALSE(s.inside(p, EngagementRule::kMajority));
+  EXPECT_TRUE(s.inside({25, 20, 18.06}, EngagementRule::kMajority));
 }
 
 TEST(Sections, ConvexHullOfSquareWithInnerPoints) {
