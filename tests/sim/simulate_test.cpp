@@ -205,6 +205,30 @@ TEST(Simulate, ScheduledFeedKeepsThePeakUnderTheLimit) {
   EXPECT_GT(r2->peak_force_n, 0.9 * limit);
 }
 
+TEST(Simulate, SameResultOnOneThreadAndOnAll) {
+  SimulationOptions opt;
+  opt.sample_stride = 7;
+  Context one, all;
+  one.threads = 1;
+  all.threads = 0;
+  Toolpath p;  // a diagonal entry and an arc: every family and the batching take part
+  p.spindle_rpm = 3000.0;
+  p.rapid_to({-6, 5, 25});
+  p.rapid_to({-6, 5, 18});
+  p.feed_to({10, 12, 18}, 1200.0);
+  p.arc_to({20, 12, 18}, {15, 12}, true, 1200.0);
+  Stock s1 = block(), s2 = block();
+  const auto r1 = simulate(s1, p, flat10(), al7075(), opt, one);
+  const auto r2 = simulate(s2, p, flat10(), al7075(), opt, all);
+  ASSERT_TRUE(r1.ok() && r2.ok());
+  EXPECT_EQ(r1->removed_mm3, r2->removed_mm3);
+  ASSERT_EQ(r1->samples.size(), r2->samples.size());
+  for (std::size_t i = 0; i < r1->samples.size(); ++i) {
+    ASSERT_EQ(r1->samples[i].force_n, r2->samples[i].force_n) << i;
+  }
+  EXPECT_EQ(forces_csv(*r1), forces_csv(*r2));
+}
+
 TEST(Simulate, MissingFeedIsAnError) {
   Stock stock = block();
   Toolpath p;
