@@ -8,6 +8,7 @@
 #include "cli/op_simulate.h"
 #include "swarf/core/io.h"
 #include "swarf/gcode/gcode.h"
+#include "swarf/mesh/stl.h"
 #include "swarf/sim/coefficients.h"
 #include "swarf/sim/simulate.h"
 
@@ -35,6 +36,8 @@ std::vector<Param> simulate_params() {
       {"rapid", ParamType::kNumber, 5000.0, "rapid traverse rate, mm/min"},
       {"forces", ParamType::kString, "", "write the force waveform CSV here"},
       {"height_map_cell", ParamType::kNumber, 0.25, "cell of the height map and picture, mm"},
+      {"stock_stl", ParamType::kBool, false,
+       "also write the machined stock as report/stock.stl (from the height map)"},
   };
 }
 
@@ -137,6 +140,10 @@ Result<OperationOutput> run_simulate(const OperationInput& in) {
   Result<std::string> png = png_bytes(hm);
   if (!png.ok()) return png.status();
   out.report_files["stock_top.png"] = std::move(png).value();
+  if (in.params["stock_stl"].get<bool>()) {
+    out.report_files["stock.stl"] =
+        stl_binary_bytes(sim::height_map_mesh(hm, s.stock.bounds().min.z));
+  }
   return out;
 }
 

@@ -129,4 +129,51 @@ std::string height_map_csv(const HeightMap& map) {
   return out;
 }
 
+Mesh height_map_mesh(const HeightMap& map, double floor_z) {
+  Mesh m;
+  const int nx = map.nx, ny = map.ny;
+  if (nx < 2 || ny < 2) return m;
+  const auto idx = [&](int i, int j, int layer) {  // layer 0 top, 1 bottom
+    return static_cast<std::uint32_t>((layer * ny + j) * nx + i);
+  };
+  for (int layer = 0; layer < 2; ++layer) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const float z = map.top[static_cast<std::size_t>(j) * nx + i];
+        const double h = layer == 1 || std::isnan(z) ? floor_z : std::max<double>(z, floor_z);
+        m.vertices.push_back(
+            {map.x0 + (i + 0.5) * map.cell_mm, map.y0 + (j + 0.5) * map.cell_mm, h});
+      }
+    }
+  }
+  // Counter-clockwise seen from outside: the top up, the bottom down, the walls outwards.
+  for (int j = 0; j + 1 < ny; ++j) {
+    for (int i = 0; i + 1 < nx; ++i) {
+      const auto a = idx(i, j, 0), b = idx(i + 1, j, 0), c = idx(i + 1, j + 1, 0),
+                 d = idx(i, j + 1, 0);
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+      const auto ab = idx(i, j, 1), bb = idx(i + 1, j, 1), cb = idx(i + 1, j + 1, 1),
+                 db = idx(i, j + 1, 1);
+      m.triangles.push_back({ab, cb, bb});
+      m.triangles.push_back({ab, db, cb});
+    }
+  }
+  for (int i = 0; i + 1 < nx; ++i) {
+    // y = min wall faces -y; y = max wall faces +y.
+    m.triangles.push_back({idx(i, 0, 1), idx(i + 1, 0, 1), idx(i + 1, 0, 0)});
+    m.triangles.push_back({idx(i, 0, 1), idx(i + 1, 0, 0), idx(i, 0, 0)});
+    m.triangles.push_back({idx(i + 1, ny - 1, 1), idx(i, ny - 1, 1), idx(i, ny - 1, 0)});
+    m.triangles.push_back({idx(i + 1, ny - 1, 1), idx(i, ny - 1, 0), idx(i + 1, ny - 1, 0)});
+  }
+  for (int j = 0; j + 1 < ny; ++j) {
+    // x = min wall faces -x; x = max wall faces +x.
+    m.triangles.push_back({idx(0, j + 1, 1), idx(0, j, 1), idx(0, j, 0)});
+    m.triangles.push_back({idx(0, j + 1, 1), idx(0, j, 0), idx(0, j + 1, 0)});
+    m.triangles.push_back({idx(nx - 1, j, 1), idx(nx - 1, j + 1, 1), idx(nx - 1, j + 1, 0)});
+    m.triangles.push_back({idx(nx - 1, j, 1), idx(nx - 1, j + 1, 0), idx(nx - 1, j, 0)});
+  }
+  return m;
+}
+
 }  // namespace swarf::sim

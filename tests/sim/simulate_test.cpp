@@ -171,6 +171,21 @@ TEST(Simulate, CircularPocketFromArcsAndFromTinyMoves) {
   }
 }
 
+TEST(Simulate, HeightMapMeshIsAClosedSolidOfTheStock) {
+  Stock stock = block();
+  const Vec3 tips[2] = {{10, 20, 18}, {40, 20, 18}};
+  stock.remove(ToolSolid{5, 0}, tips);
+  const HeightMap hm = stock.height_map(0.5);
+  const Mesh m = height_map_mesh(hm, 0.0);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.closed());
+  EXPECT_EQ(c.inconsistent_edges, 0u);
+  // Through the cell centres: the block less a half cell on each side, less the slot.
+  const double block_v = (60.0 - 0.5) * (40.0 - 0.5) * 20.0;
+  const double slot_v = 2.0 * (10.0 * 30.0 + kPi * 25.0);
+  EXPECT_NEAR(c.volume_mm3, block_v - slot_v, 0.01 * slot_v);
+}
+
 TEST(Simulate, RapidIntoMaterialIsACollision) {
   Stock stock = block();
   Toolpath p;

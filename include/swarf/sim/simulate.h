@@ -11,6 +11,7 @@
 
 #include "swarf/core/context.h"
 #include "swarf/core/status.h"
+#include "swarf/mesh/mesh.h"
 #include "swarf/sim/force.h"
 #include "swarf/sim/stock.h"
 #include "swarf/tool/tool.h"
@@ -113,5 +114,8 @@ std::string forces_svg(const SimulationResult& r, const std::string& title,
 Status write_height_map_png(const std::string& path, const HeightMap& map, int pixels_per_cell = 2);
 /// The height map as CSV rows x_mm,y_mm,z_mm.
 std::string height_map_csv(const HeightMap& map);
+/// The height map as a closed solid between `floor_z` and the top surface through the cell
+/// centres (cells without material at floor_z): the machined stock as a mesh for STL.
+Mesh height_map_mesh(const HeightMap& map, double floor_z);
 
 }  // namespace swarf::sim
