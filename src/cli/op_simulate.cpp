@@ -27,7 +27,9 @@ std::vector<Param> simulate_params() {
       {"axial_step", ParamType::kNumber, 0.1, "axial resolution of the cutting edge, mm"},
       {"angle_step", ParamType::kNumber, 1.0, "rotation step, degrees"},
       {"step", ParamType::kNumber, 0.0, "tool advance per engagement evaluation, mm (0: pitch)"},
-      {"batch", ParamType::kNumber, 2.0, "tool advance per stock update, mm"},
+      {"batch", ParamType::kNumber, 3.0, "tool advance per stock update, mm"},
+      {"batch_turn", ParamType::kNumber, 45.0,
+       "a stock update also follows a turn of the path by this much, degrees"},
       {"engagement", ParamType::kString, "majority",
        "how the three slice families vote on an edge point: majority or any (the paper)"},
       {"force_limit", ParamType::kNumber, 0.0,
@@ -60,6 +62,7 @@ Result<SimulationSetup> prepare_simulation(const OperationInput& in) {
   o.force.angle_step_deg = p["angle_step"].get<double>();
   o.step_mm = p["step"].get<double>() > 0.0 ? p["step"].get<double>() : pitch;
   o.batch_mm = std::max(o.step_mm, p["batch"].get<double>());
+  o.batch_turn_deg = p["batch_turn"].get<double>();
   const std::string rule = p["engagement"].get<std::string>();
   if (rule == "majority") {
     o.engagement = sim::EngagementRule::kMajority;

@@ -86,9 +86,9 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
   std::size_t force_count = 0;
 
   // Removal is deferred into a pending polyline and done in one subtraction per slice when
-  // it reaches batch_mm, turns by more than 15° (engagement is tested against the stock
-  // before the pending part: exact for the cutting elements on a straight run), switches
-  // between rapid and feed, or a move longer than a step ends. Runs of tiny moves (a
+  // it reaches batch_mm, turns by more than batch_turn_deg (engagement is tested against the
+  // stock before the pending part: exact for the cutting elements on a straight run),
+  // switches between rapid and feed, or a move longer than a step ends. Runs of tiny moves (a
   // finishing contour in 0.01 mm blocks) share batches; their volume is split by length.
   struct Pending {
     std::vector<Vec3> pts;
@@ -97,7 +97,7 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
     bool rapid = false;
     std::vector<std::pair<std::size_t, double>> owners;  // move index, length in the batch
   } pend;
-  const double cos_turn = std::cos(deg_to_rad(15.0));
+  const double cos_turn = std::cos(deg_to_rad(opt.batch_turn_deg));
   auto flush = [&]() {
     if (pend.pts.size() >= 2) {
       const Removal rm = stock.remove(solid, pend.pts, ctx);

@@ -25,7 +25,12 @@ struct SimulationOptions {
   /// Tool advance collected before one subtraction from the stock, mm. Engagement is tested
   /// against the stock as it was before the batch: exact for the edge points that cut
   /// (they face the feed and lie outside the solid already swept along a straight move).
-  double batch_mm = 2.0;
+  double batch_mm = 3.0;
+  /// A batch also ends when the path turns by more than this, degrees: on a curve the
+  /// pending (not yet subtracted) sweep could count material the tool already passed at its
+  /// sides. Measured on a helical pocket: forces change by 0.1% between 5° and 90°, the run
+  /// time by 4x; 45° keeps every sharp corner a batch boundary.
+  double batch_turn_deg = 45.0;
   /// Spindle speed, rpm; 0 takes the toolpath's.
   double spindle_rpm = 0.0;
   /// Rapid traverse rate for the clock, mm/min.
