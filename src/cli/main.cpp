@@ -53,8 +53,10 @@ Result<nlohmann::json> value_from_flag(const Param& p, const std::string& text) 
         return bad_parameter(flag + ": '" + text + "' is not a whole number");
       return nlohmann::json(v);
     }
-    case ParamType::kString: return nlohmann::json(text);
-    case ParamType::kBool: return nlohmann::json(text == "true" || text == "1" || text == "yes");
+    case ParamType::kString:
+      return nlohmann::json(text);
+    case ParamType::kBool:
+      return nlohmann::json(text == "true" || text == "1" || text == "yes");
     case ParamType::kNumberList: {
       nlohmann::json list = nlohmann::json::array();
       std::size_t start = 0;
@@ -217,7 +219,8 @@ int run_main(int argc, char** argv) {
 
   std::string job_path;
   JobOptions job_options;
-  CLI::App* run = app.add_subcommand("run", "run a job file (JSON: part, tool, operation, outputs)");
+  CLI::App* run =
+      app.add_subcommand("run", "run a job file (JSON: part, tool, operation, outputs)");
   run->add_option("job", job_path, "job file")->required();
   run->add_option("--output-dir", job_options.output_dir,
                   "write the job's outputs here (default: beside the job file)");
