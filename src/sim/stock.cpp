@@ -301,7 +301,11 @@ Removal Stock::remove(const ToolSolid& tool, std::span<const Vec3> tips, const C
       jobs.push_back({a, s});
     }
   }
-  const double top = model_.bounds.max.z + 1.0;
+  // The sections in yz / zx planes are the tool's profile plus the shank up to a common top.
+  // The top must clear the stock and every tip's corner (a ramp may start in the air): only
+  // then are all sections translates of one shape cut by the same plane, and the hull of
+  // two of them the exact sweep.
+  const double top = std::max(model_.bounds.max.z, reach.max.z + tool.corner_radius_mm) + 1.0;
   // Every xy slice at or above the highest tip plus the corner radius sees the full-width
   // section: compute that one once (an offset of a long polyline is the costly part).
   const double saturated_level = reach.max.z + tool.corner_radius_mm;

@@ -77,6 +77,40 @@ TEST(StockRemoval, FlatRampFromTheTopFace) {
   expect_volume(rm, want);
 }
 
+TEST(StockRemoval, BallRampEnteringFromTheAir) {
+  // A ball ramping from above the stock into it: checked against a direct integration of
+  // the depth under the top face, depth(x, y) = 20 - min over t of (z(t) + H(rho)), with H
+  // the ball's height at distance rho from its axis (convex in t: ternary search).
+  Stock s = block();
+  const double r = 4;
+  const Vec3 a{10, 20, 21}, b{40, 20, 17};
+  const Vec3 tips[2] = {a, b};
+  const Removal rm = s.remove(ball(2 * r), tips);
+  double want = 0.0;
+  const double h = 0.05;
+  for (double x = 5 + h / 2; x < 46; x += h) {
+    for (double y = 15.5 + h / 2; y < 24.5; y += h) {
+      auto zt = [&](double t) {
+        const double cx = a.x + (b.x - a.x) * t, cz = a.z + (b.z - a.z) * t;
+        const double rho = std::hypot(x - cx, y - 20);
+        return rho >= r ? 1e9 + rho : cz + r - std::sqrt(r * r - rho * rho);
+      };
+      double lo = 0, hi = 1;
+      for (int k = 0; k < 50; ++k) {
+        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        if (zt(m1) < zt(m2)) {
+          hi = m2;
+        } else {
+          lo = m1;
+        }
+      }
+      const double zl = std::min({zt(0.0), zt(1.0), zt(0.5 * (lo + hi))});
+      if (zl < 20) want += (20 - zl) * h * h;
+    }
+  }
+  expect_volume(rm, want);
+}
+
 TEST(StockRemoval, CircularPocket) {
   Stock s = block();
   const double r = 5, ring = 6, depth = 3;
