@@ -179,22 +179,28 @@ void append_section_points(const ToolSolid& tool, Vec3 tip, Axis axis, double le
   if (d >= tool.radius_mm) return;
   const double lateral = axis == Axis::kX ? tip.y : tip.x;
   // The section's lower boundary: at lateral offset s the point on the tool's surface at
-  // distance w = sqrt(s^2 + d^2) from the axis, height h(w). Sampled uniformly in an angle
-  // (s = s_max sin(phi)) so the steep ends, where a ball's section meets the shank, get the
-  // most points; chord error below a micron on a 4 mm radius.
+  // distance w = sqrt(s^2 + d^2) from the axis, height h(w). Flat where w <= r - rc (two
+  // points); over the corner sampled as s = s_flat + (s_max - s_flat) sin(phi), densest at
+  // the steep end where a ball's section meets the shank; chord error below a micron.
   const double r = tool.radius_mm, rc = tool.corner_radius_mm;
   const double smax = std::sqrt(std::max(0.0, r * r - d * d));
-  constexpr int kSamples = 96;
-  for (int k = 0; k <= kSamples; ++k) {
-    const double phi = kPi * (static_cast<double>(k) / kSamples - 0.5);
-    const double off = smax * std::sin(phi);
+  const double flat = std::max(0.0, r - rc);
+  const double sflat = d < flat ? std::sqrt(flat * flat - d * d) : 0.0;
+  const int n =
+      rc > 0.0 ? std::clamp(static_cast<int>(std::ceil(48.0 * (smax - sflat) / r)), 2, 48) : 0;
+  auto height = [&](double off) {
     const double w = std::min(r, std::sqrt(off * off + d * d));
-    double h = 0.0;
-    if (w > r - rc) {
-      const double u = w - (r - rc);
-      h = rc - std::sqrt(std::max(0.0, rc * rc - u * u));
-    }
-    out.push_back(in_plane(axis, lateral + off, tip.z + h));
+    if (w <= flat) return 0.0;
+    const double u = w - flat;
+    return rc - std::sqrt(std::max(0.0, rc * rc - u * u));
+  };
+  out.push_back(in_plane(axis, lateral - sflat, tip.z + height(sflat)));
+  out.push_back(in_plane(axis, lateral + sflat, tip.z + height(sflat)));
+  for (int k = 1; k <= n; ++k) {
+    const double off = sflat + (smax - sflat) * std::sin(0.5 * kPi * k / n);
+    const double h = tip.z + height(off);
+    out.push_back(in_plane(axis, lateral - off, h));
+    out.push_back(in_plane(axis, lateral + off, h));
   }
   out.push_back(in_plane(axis, lateral - smax, top));
   out.push_back(in_plane(axis, lateral + smax, top));
