@@ -1,3 +1,4 @@
+(helical entry and circular pocket: swarf simulate helical_pocket.nc --stock box:0,0,0,60,40,20 --tool flat:6 --flutes 3)
 G21 G90 G17
 S6000 M3
 G0 X33 Y20 Z22
