@@ -175,11 +175,22 @@ Result<Stock> Stock::from_model(TriSliceModel model) {
   return s;
 }
 
+double Stock::thickness(int family, std::size_t slice) const {
+  // Cells are [level - pitch/2, level + pitch/2] clipped to the model's bounds: the last
+  // cell of a box whose size is not a whole number of pitches is thinner.
+  const SliceFamily& f = model_.families[family];
+  const double c = f.level(slice);
+  const double lo = std::max(c - 0.5 * f.pitch_mm, model_.bounds.min[family]);
+  const double hi = std::min(c + 0.5 * f.pitch_mm, model_.bounds.max[family]);
+  return std::max(0.0, hi - lo);
+}
+
 double Stock::volume_mm3(Axis family) const {
+  const int a = static_cast<int>(family);
   double v = 0.0;
-  for (double a : areas_[static_cast<int>(family)])
-    v += a;
-  return v * model_.pitch_mm;
+  for (std::size_t j = 0; j < areas_[a].size(); ++j)
+    v += areas_[a][j] * thickness(a, j);
+  return v;
 }
 
 double Stock::volume_mm3() const {
@@ -251,6 +262,7 @@ bool Stock::inside_slice(int family, std::size_t slice, Vec2 uv) const {
 
 bool Stock::inside(Vec3 p, Axis family) const {
   const int a = static_cast<int>(family);
+  if (p[a] < model_.bounds.min[a] || p[a] > model_.bounds.max[a]) return false;
   const SliceFamily& f = model_.families[a];
   // seed 001 Fig. 10b: the slice nearest to the point along the family's axis, within ds/2.
   const double j = std::round((p[a] - f.first_level) / f.pitch_mm);
@@ -333,7 +345,7 @@ Removal Stock::remove(const ToolSolid& tool, std::span<const Vec3> tips, const C
     areas_[job.family][job.slice] = a_next;
     slice_bounds_[job.family][job.slice] = swarf::bounds(slice);
     rebuild_index(job.family, job.slice);
-    removed[i] = delta * pitch;
+    removed[i] = delta * thickness(job.family, job.slice);
   });
   for (std::size_t i = 0; i < jobs.size(); ++i)
     out.by_family_mm3[jobs[i].family] += removed[i];

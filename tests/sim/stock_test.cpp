@@ -41,6 +41,21 @@ TEST(StockRemoval, BlockVolumeIsExact) {
   EXPECT_FALSE(s.inside({-0.01, 1, 1}, EngagementRule::kAny));
 }
 
+TEST(StockRemoval, BlockOffThePitchGridKeepsItsVolume) {
+  // 10.05 mm tall at a 0.1 mm pitch: the top cell is half a pitch thick.
+  auto s = Stock::block({{0, 0, 0}, {10.05, 5.03, 10.05}}, kPitch);
+  ASSERT_TRUE(s.ok());
+  const double v = 10.05 * 5.03 * 10.05;
+  EXPECT_NEAR(s->volume_mm3(), v, 1e-9 * v);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(s->volume_mm3(static_cast<Axis>(a)), v, 1e-9 * v);
+  EXPECT_FALSE(s->inside({5, 2, 10.07}, EngagementRule::kAny));
+  // Facing off the top 0.55 mm with a big flat end mill.
+  const Vec3 tips[2] = {{-20, 2.5, 9.5}, {30, 2.5, 9.5}};
+  const Removal rm = s->remove(flat(40), tips);
+  expect_volume(rm, 10.05 * 5.03 * 0.55);
+}
+
 TEST(StockRemoval, FlatSlot) {
   Stock s = block();
   const double r = 5, len = 30, depth = 2;

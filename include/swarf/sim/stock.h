@@ -107,6 +107,7 @@ class Stock {
     std::vector<std::array<double, 4>> edges;  ///< (ua, va, ub, vb) per row, duplicated
   };
   void rebuild_index(int family, std::size_t slice);
+  double thickness(int family, std::size_t slice) const;
   bool inside_slice(int family, std::size_t slice, Vec2 uv) const;
 
   TriSliceModel model_;
