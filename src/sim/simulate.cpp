@@ -273,6 +273,9 @@ FeedSchedule schedule_feed(const Toolpath& path, const SimulationResult& sim,
     if (o.max_feed_mm_min > 0.0 && feed > mv.feed_mm_min) {
       feed = std::max(mv.feed_mm_min, std::min(feed, o.max_feed_mm_min));  // caps raises only
     }
+    if (o.max_chip_mm > 0.0 && o.spindle_rpm > 0.0) {
+      feed = std::min(feed, o.max_chip_mm * o.spindle_rpm * o.flutes);
+    }
     feed = std::max(feed, o.min_feed_mm_min);
     nm.feed_mm_min = feed;
     if (feed < mv.feed_mm_min * (1.0 - 1e-9)) ++out.slowed;
