@@ -176,7 +176,8 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
           }
           const ElementTable table = element_table(
               model, ft, dir,
-              [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used);
+              [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used,
+              ctx.threads);
           for (std::size_t lv = 0; lv < table.levels_used; ++lv) {
             mr.engaged_arc_deg = std::max(mr.engaged_arc_deg, engaged_arc_deg(model, table, lv));
           }
