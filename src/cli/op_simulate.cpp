@@ -138,7 +138,13 @@ Result<OperationOutput> run_simulate(const OperationInput& in) {
   out.toolpaths.push_back(r->annotated);
   out.report_files["forces.svg"] = sim::forces_svg(*r, "Cutting forces: " + in.input_path);
   out.report_files["moves.csv"] = sim::moves_csv(*r);
-  const sim::HeightMap hm = s.stock.height_map(in.params["height_map_cell"].get<double>());
+  const double cell = in.params["height_map_cell"].get<double>();
+  const Vec3 size = s.stock.bounds().size();
+  if (!(cell > 0.0) || size.x / cell * (size.y / cell) > 1e8) {
+    return bad_parameter("--height-map-cell " + std::to_string(cell) +
+                         " mm must be positive and give at most 1e8 cells over the stock");
+  }
+  const sim::HeightMap hm = s.stock.height_map(cell);
   out.report_files["stock_height.csv"] = sim::height_map_csv(hm);
   Result<std::string> png = png_bytes(hm);
   if (!png.ok()) return png.status();

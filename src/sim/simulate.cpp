@@ -64,7 +64,7 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
   SWARF_RETURN_IF_ERROR(validate(opt));
   SWARF_RETURN_IF_ERROR(validate(tool));
   const double rpm = opt.spindle_rpm > 0.0 ? opt.spindle_rpm : path.spindle_rpm;
-  if (!(rpm > 0.0)) return bad_parameter("simulate: spindle speed must be positive");
+  if (!(rpm > 0.0)) return bad_parameter("simulate: no spindle speed (give --rpm or an S word)");
   Result<ForceModel> model_r = ForceModel::create(cutter_from_tool(tool), k, opt.force);
   if (!model_r.ok()) return model_r.status();
   const ForceModel& model = *model_r;

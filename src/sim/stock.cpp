@@ -357,6 +357,8 @@ HeightMap Stock::height_map(double cell_mm) const {
   HeightMap hm;
   const Box3& b = model_.bounds;
   hm.cell_mm = cell_mm;
+  const Vec3 size = b.size();
+  if (!(cell_mm > 0.0) || size.x / cell_mm * (size.y / cell_mm) > 1e8) return hm;  // nx = ny = 0
   hm.x0 = b.min.x;
   hm.y0 = b.min.y;
   hm.nx = std::max(1, static_cast<int>(std::ceil((b.max.x - b.min.x) / cell_mm - 1e-9)));

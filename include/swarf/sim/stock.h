@@ -97,7 +97,8 @@ class Stock {
   Removal remove(const ToolSolid& tool, std::span<const Vec3> tips,
                  const Context& ctx = default_context());
 
-  /// Height map of the material's top, from the yz slices, at the given cell size.
+  /// Height map of the material's top, from the yz slices, at the given cell size (empty
+  /// for a cell that is not positive or would give more than 1e8 cells).
   HeightMap height_map(double cell_mm) const;
 
  private:
