@@ -233,7 +233,8 @@ void Stock::rebuild_index(int family, std::size_t slice) {
           if (pass == 0) {
             ++counts[r];
           } else {
-            ix.edges[ix.row_start[r] + counts[r]++] = {a.x, a.y, c.x, c.y};
+            // (u at va, va, vb, du/dv): the crossing test needs no division.
+            ix.edges[ix.row_start[r] + counts[r]++] = {a.x, a.y, c.y, (c.x - a.x) / (c.y - a.y)};
           }
         }
       }
@@ -251,9 +252,9 @@ bool Stock::inside_slice(int family, std::size_t slice, Vec2 uv) const {
       std::clamp(std::floor((uv.y - ix.v0) / ix.row_h), 0.0, static_cast<double>(rows - 1)));
   bool in = false;
   for (std::uint32_t e = ix.row_start[r]; e < ix.row_start[r + 1]; ++e) {
-    const auto& [ua, va, ub, vb] = ix.edges[e];
+    const auto& [ua, va, vb, slope] = ix.edges[e];
     if ((va > uv.y) != (vb > uv.y)) {
-      const double u = ua + (uv.y - va) * (ub - ua) / (vb - va);
+      const double u = ua + (uv.y - va) * slope;
       if (uv.x < u) in = !in;
     }
   }

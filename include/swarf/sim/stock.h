@@ -105,7 +105,7 @@ class Stock {
   struct SliceIndex {
     double v0 = 0.0, row_h = 1.0;
     std::vector<std::uint32_t> row_start;      ///< rows + 1 offsets into edges
-    std::vector<std::array<double, 4>> edges;  ///< (ua, va, ub, vb) per row, duplicated
+    std::vector<std::array<double, 4>> edges;  ///< (ua, va, vb, du/dv) per row, duplicated
   };
   void rebuild_index(int family, std::size_t slice);
   double thickness(int family, std::size_t slice) const;
