@@ -150,6 +150,20 @@ TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   EXPECT_EQ(q.status().code(), Error::kNoEntryFound) << q.status().to_string();
 }
 
+TEST(AdaptivePocket, SameInputSameToolpath) {
+  const Pocket p = load("kirimoto_pocket.json");
+  Tool t;
+  t.diameter_mm = 10.0;
+  AdaptiveParams ap;
+  ap.stepover_mm = 2.0;
+  auto a = adaptive_pocket(p, t, ap);
+  auto b = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(a->toolpath.moves.size(), b->toolpath.moves.size());
+  for (std::size_t k = 0; k < a->toolpath.moves.size(); ++k)
+    ASSERT_EQ(a->toolpath.moves[k].end, b->toolpath.moves[k].end) << "move " << k;
+}
+
 TEST(AdaptivePocket, StepoverAndEngagementAngleAreTheSameParameter) {
   // acos(1 - stepover / R): 10 % of a 10 mm tool is 36.87 degrees.
   EXPECT_NEAR(engagement_angle_deg(1.0, 5.0), rad_to_deg(std::acos(0.8)), 1e-12);
