@@ -39,6 +39,13 @@ struct TriSliceModel {
 Result<TriSliceModel> build_trislice(const Mesh& mesh, double pitch_mm, const Box3& region = {},
                                      const Context& ctx = default_context());
 
+/// As build_trislice, slicing only the families marked (indexed by Axis); the others stay
+/// empty. Scanning paths need the x and y families only, waterlines the z family.
+Result<TriSliceModel> build_trislice_families(const Mesh& mesh, double pitch_mm,
+                                              const std::array<bool, 3>& families,
+                                              const Box3& region = {},
+                                              const Context& ctx = default_context());
+
 /// A rectangular block as a tri-slice model (the usual stock), exact at any pitch.
 TriSliceModel trislice_block(const Box3& block, double pitch_mm);
 

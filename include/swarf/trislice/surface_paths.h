@@ -1,0 +1,103 @@
+// Ball-end toolpaths from the tri-slice model (seed 001 section 3.1): scanning (raster)
+// paths from the top of the model inflated by the tool radius, with the roughing scheme of
+// Table 1, and contour (waterline) paths from its inflated xy slices. Positions are tool tips.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "swarf/core/context.h"
+#include "swarf/core/status.h"
+#include "swarf/tool/tool.h"
+#include "swarf/toolpath/toolpath.h"
+#include "swarf/trislice/envelope.h"
+#include "swarf/trislice/model.h"
+#include "swarf/trislice/offset.h"
+
+namespace swarf {
+
+inline constexpr double kAuto = std::numeric_limits<double>::quiet_NaN();
+
+struct ScanParams {
+  Axis direction = Axis::kX;  ///< kX: lines at constant y, cutting along x; kY the other way
+  bool zigzag = false;        ///< false: one-way (Table 1), every line in the + direction
+  double stepover_mm = 0.25;  ///< radial depth of cut between lines (Table 1 finishing)
+  double sampling_mm = 0.1;   ///< CL point spacing along a line before simplification
+  double stock_to_leave_mm = 0.0;
+  Box2 region;                  ///< tool-axis area; empty: the model's xy bounds
+  double tolerance_mm = 0.001;  ///< simplification of each line (chordal), 0 = keep all
+  double feed_mm_min = 1000.0;
+  double plunge_feed_mm_min = 300.0;
+  double clearance_z_mm = kAuto;  ///< default: 5 mm above the model (or stock) top
+  double floor_z_mm = kAuto;      ///< tip height where nothing lies under the tool: model bottom
+};
+
+/// Table 1 roughing: `layers` scans over the model inflated by r + margin + k * stepdown,
+/// k = layers-1 down to 0, each clipped to the stock top.
+struct RoughingParams {
+  int layers = 5;
+  double stepdown_mm = 2.0;     ///< axial depth of cut
+  double stepover_mm = 2.0;     ///< radial depth of cut
+  double margin_mm = 0.1;       ///< stock left for finishing
+  double stock_top_mm = kAuto;  ///< default: the model top
+  /// Roughing reads every k-th slice so that its pitch is at least this (its error, tens of
+  /// micrometres at 0.125 mm, is far inside the margin); 0 = every slice.
+  double min_pitch_mm = 0.125;
+  /// CL spacing along roughing lines: the chord between two points of an offset surface of
+  /// radius >= r + margin sags at most s^2 / (8 (r + margin)) (8 um at 0.5 mm, r = 4), far
+  /// inside the margin. 0 = the scan's own sampling.
+  double sampling_mm = 0.5;
+};
+
+struct ContourParams {
+  double stepdown_mm = 1.0;  ///< between waterline levels (tip heights)
+  double stock_to_leave_mm = 0.0;
+  int radial_passes = 1;  ///< rings per level: the offset contour and k * radial_step outside
+  double radial_step_mm = 2.0;
+  double top_z_mm = kAuto;     ///< highest tip level; default: model top - stepdown
+  double bottom_z_mm = kAuto;  ///< lowest tip level; default: model bottom
+  double arc_tolerance_mm = 0.001;
+  double feed_mm_min = 1000.0;
+  double plunge_feed_mm_min = 300.0;
+  double clearance_z_mm = kAuto;
+};
+
+Status validate(const ScanParams& p);
+Status validate(const RoughingParams& p);
+Status validate(const ContourParams& p);
+
+/// CL lines (tool tips) of a scan at offset `extra_mm` above the part (stock to leave,
+/// margin, roughing layer): the tool centre is the top of the model inflated by r + extra.
+/// Lines in order, each in the + direction, points `sampling_mm` apart. Parallel per line.
+Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
+                                                     double tool_radius_mm, double extra_mm,
+                                                     const ScanParams& params,
+                                                     const Context& ctx = default_context());
+
+/// Finishing scan: one layer at the stock to leave. Needs a ball end mill.
+Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& top,
+                                const Tool& tool, const ScanParams& params,
+                                const Context& ctx = default_context());
+
+/// The finishing toolpath from CL lines already computed by scan_cl_lines (at the params'
+/// stock to leave), so a caller that also wants the raw CL points computes them once.
+Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
+                                           const Tool& tool, const ScanParams& params,
+                                           std::vector<std::vector<Vec3>> lines);
+
+/// Roughing scan per Table 1 (its stepover replaces params.stepover_mm).
+Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
+                               const ScanParams& params, const RoughingParams& rough,
+                               const Context& ctx = default_context());
+
+/// Tool-centre region at tip height z for a ball of radius r_mm (3-axis: the ball's lower half
+/// against the xy slices within r below the centre by Eq. (1), the shank cylinder against every
+/// slice above it). Its boundary is the waterline at z.
+PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
+                            const ConvolutionOptions& options = {});
+
+/// Contour (waterline) paths, level by level from the top, outermost ring first.
+Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool,
+                               const ContourParams& params, const Context& ctx = default_context());
+
+}  // namespace swarf

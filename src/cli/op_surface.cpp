@@ -1,0 +1,147 @@
+// `swarf surface`: ball-end scanning or contour paths from the tri-slice model (seed 001).
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "cli/operation.h"
+#include "swarf/mesh/stl.h"
+#include "swarf/toolpath/postprocess.h"
+#include "swarf/trislice/envelope.h"
+#include "swarf/trislice/surface_paths.h"
+
+namespace swarf::cli {
+namespace {
+
+using nlohmann::json;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string cl_csv(const std::vector<std::vector<Vec3>>& lines) {
+  std::ostringstream os;
+  os.precision(10);
+  os << "line,x,y,z\n";
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    for (const Vec3& p : lines[i])
+      os << i << ',' << p.x << ',' << p.y << ',' << p.z << '\n';
+  return os.str();
+}
+
+Result<OperationOutput> run_surface(const OperationInput& in) {
+  const json& p = in.params;
+  const Context& ctx = in.ctx != nullptr ? *in.ctx : default_context();
+  auto stl = read_stl(in.input_path);
+  if (!stl.ok()) return stl.status();
+  const Tool& tool = *in.tool;
+  const std::string pattern = p["pattern"].get<std::string>();
+  const std::string dir = p["direction"].get<std::string>();
+  if (pattern != "scan" && pattern != "contour")
+    return bad_parameter("--pattern must be scan or contour, not \"" + pattern + "\"");
+  if (dir != "x" && dir != "y")
+    return bad_parameter("--direction must be x or y, not \"" + dir + "\"");
+  const double pitch = p["pitch"].get<double>();
+
+  OperationOutput out;
+  const auto t0 = std::chrono::steady_clock::now();
+  // Scanning reads all three families (the xy one holds steep walls), waterlines only z.
+  const std::array<bool, 3> families = pattern == "scan" ? std::array<bool, 3>{true, true, true}
+                                                         : std::array<bool, 3>{false, false, true};
+  auto model = build_trislice_families(stl->mesh, pitch, families, {}, ctx);
+  if (!model.ok()) return model.status().with_context(in.input_path);
+  out.summary["model_s"] = seconds_since(t0);
+  out.summary["pitch_mm"] = pitch;
+  std::size_t slices = 0;
+  for (const SliceFamily& f : model->families)
+    slices += f.size();
+  out.summary["slices"] = slices;
+
+  const double feed = p["feed"].get<double>(), plunge = p["plunge_feed"].get<double>();
+  if (pattern == "contour") {
+    ContourParams cp;
+    cp.stepdown_mm = p["stepdown"].get<double>();
+    cp.stock_to_leave_mm = p["stock_to_leave"].get<double>();
+    cp.radial_passes = std::max(1, p["radial_passes"].get<int>());
+    cp.radial_step_mm = p["stepover"].get<double>();
+    cp.feed_mm_min = feed;
+    cp.plunge_feed_mm_min = plunge;
+    const auto t1 = std::chrono::steady_clock::now();
+    auto tp = contour_paths(*model, tool, cp, ctx);
+    if (!tp.ok()) return tp.status().with_context(in.input_path);
+    out.summary["contour_s"] = seconds_since(t1);
+    // Waterlines are planar: arcs where they fit.
+    out.toolpaths.push_back(fit_arcs(simplify(*tp, p["tolerance"].get<double>())));
+    return out;
+  }
+
+  ScanParams sp;
+  sp.direction = dir == "x" ? Axis::kX : Axis::kY;
+  sp.zigzag = p["zigzag"].get<bool>();
+  sp.stepover_mm = p["stepover"].get<double>();
+  sp.sampling_mm = p["sampling"].get<double>();
+  sp.stock_to_leave_mm = p["stock_to_leave"].get<double>();
+  sp.tolerance_mm = p["tolerance"].get<double>();
+  sp.feed_mm_min = feed;
+  sp.plunge_feed_mm_min = plunge;
+  const auto t1 = std::chrono::steady_clock::now();
+  const TriSliceTop top = TriSliceTop::build(*model);
+  const int layers = p["rough_layers"].get<int>();
+  if (layers > 0) {
+    RoughingParams rp;
+    rp.layers = layers;
+    rp.stepdown_mm = p["stepdown"].get<double>();
+    rp.stepover_mm = p["rough_stepover"].get<double>();
+    rp.margin_mm = p["margin"].get<double>();
+    if (!p["stock_top"].is_null()) rp.stock_top_mm = p["stock_top"].get<double>();
+    auto rough = scan_roughing(*model, top, tool, sp, rp, ctx);
+    if (!rough.ok()) return rough.status().with_context(in.input_path);
+    out.summary["roughing_s"] = seconds_since(t1);
+    out.toolpaths.push_back(std::move(rough).value());
+  }
+  const auto t2 = std::chrono::steady_clock::now();
+  auto lines = scan_cl_lines(top, model->bounds, tool.radius(), sp.stock_to_leave_mm, sp, ctx);
+  if (!lines.ok()) return lines.status().with_context(in.input_path);
+  std::string csv = cl_csv(*lines);
+  std::size_t n = 0;
+  for (const auto& l : *lines)
+    n += l.size();
+  auto fin = scan_finishing_from_lines(*model, top, tool, sp, std::move(lines).value());
+  if (!fin.ok()) return fin.status().with_context(in.input_path);
+  out.summary["finishing_s"] = seconds_since(t2);
+  out.summary["cl_points"] = n;
+  out.toolpaths.push_back(std::move(fin).value());
+  // The CSV holds the finishing CL points (tool tips) before simplification, for comparison
+  // with a drop-cutter on the same grid.
+  out.csv_override = std::move(csv);
+  return out;
+}
+
+const OperationRegistrar kRegister{Operation{
+    "surface",
+    "ball-end scanning or contour paths from the tri-slice model (seed 001)",
+    "PART.stl",
+    true,
+    true,
+    {
+        {"pattern", ParamType::kString, "scan", "scan (raster) or contour (waterline)"},
+        {"direction", ParamType::kString, "x", "scan lines along x or y"},
+        {"zigzag", ParamType::kBool, false, "alternate line directions (default one-way)"},
+        {"stepover", ParamType::kNumber, 0.25, "distance between scan lines / contour rings, mm"},
+        {"sampling", ParamType::kNumber, 0.1, "CL point spacing along a scan line, mm"},
+        {"pitch", ParamType::kNumber, 0.05, "slice pitch of the tri-slice model, mm"},
+        {"stock_to_leave", ParamType::kNumber, 0.0, "material left on the part, mm"},
+        {"rough_layers", ParamType::kInteger, 0, "roughing layers before finishing (Table 1: 5)"},
+        {"stepdown", ParamType::kNumber, 2.0, "roughing axial depth / contour level spacing, mm"},
+        {"rough_stepover", ParamType::kNumber, 2.0, "roughing radial depth of cut, mm"},
+        {"margin", ParamType::kNumber, 0.1, "roughing margin left for finishing, mm"},
+        {"stock_top", ParamType::kNumber, nullptr, "stock top for roughing, mm (default part top)",
+         true},
+        {"radial_passes", ParamType::kInteger, 1, "contour rings per level"},
+        {"tolerance", ParamType::kNumber, 0.001, "path simplification tolerance, mm"},
+        {"feed", ParamType::kNumber, 1000.0, "cutting feed, mm/min"},
+        {"plunge_feed", ParamType::kNumber, 300.0, "plunge feed, mm/min"},
+    },
+    run_surface}};
+
+}  // namespace
+}  // namespace swarf::cli

@@ -1,0 +1,352 @@
+// Exact drop-cutter against a triangle mesh. The cutter is a convex solid of revolution whose
+// lower surface is z = tip + h(d), d the distance from the axis (h of Tool::height_at), so the
+// tip height over a triangle is max over its points q of q.z - h(|q.xy - p|): the maximum of a
+// concave function, reached at a vertex, on an edge or inside the facet. Closed forms for the
+// ball (all three), the flat end (all three) and the bull-nose (vertex, facet); the bull-nose
+// edge is a one-dimensional concave maximisation solved by golden section.
+#include "swarf/dropcut/dropcut.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "swarf/core/parallel.h"
+
+namespace swarf {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Height of the cutter surface above the tip at distance d from the axis (d <= R).
+double profile_height(const CutterShape& c, double d) {
+  const double flat = c.radius_mm - c.corner_radius_mm;
+  if (d <= flat) return 0.0;
+  const double e = std::min(d - flat, c.corner_radius_mm);
+  return c.corner_radius_mm -
+         std::sqrt(std::max(0.0, c.corner_radius_mm * c.corner_radius_mm - e * e));
+}
+
+double box_distance(const Box2& b, Vec2 p) {
+  const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
+  const double dy = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+  return std::hypot(dx, dy);
+}
+
+// True when q lies in the xy projection of the triangle (boundary included).
+bool inside_xy(const std::array<Vec3, 3>& p, Vec2 q) {
+  const Vec2 a = p[0].xy(), b = p[1].xy(), c = p[2].xy();
+  const double d0 = cross(b - a, q - a);
+  const double d1 = cross(c - b, q - b);
+  const double d2 = cross(a - c, q - c);
+  const bool has_neg = d0 < 0 || d1 < 0 || d2 < 0;
+  const bool has_pos = d0 > 0 || d1 > 0 || d2 > 0;
+  return !(has_neg && has_pos);
+}
+
+void consider(DropResult& best, double tip, ContactKind kind, std::size_t tri) {
+  if (tip > best.tip_z) {
+    best.tip_z = tip;
+    best.contact = kind;
+    best.triangle = tri;
+  }
+}
+
+// Ball of radius r against the segment a-b: the centre rises until its distance to the line
+// is r, the larger root of a quadratic in the centre height; valid when the foot of the
+// perpendicular lies on the segment.
+double ball_edge(Vec3 a, Vec3 b, Vec2 p, double r) {
+  const Vec3 e = b - a;
+  const double len = norm(e);
+  if (len <= 0.0) return -kInf;
+  const double ux = e.x / len, uy = e.y / len, uz = e.z / len;
+  const double a2 = ux * ux + uy * uy;  // 1 - uz^2, computed without cancellation
+  if (a2 < 1e-14) return -kInf;         // vertical edge: its end points decide
+  const double qx = p.x - a.x, qy = p.y - a.y;
+  const double A = qx * ux + qy * uy;
+  const double B = qx * qx + qy * qy;
+  const double disc = A * A * uz * uz - a2 * (B - A * A - r * r);
+  if (disc < 0.0) return -kInf;
+  const double s = (A * uz + std::sqrt(disc)) / a2;  // centre height above a.z
+  const double t = A + s * uz;                       // foot of the perpendicular along the edge
+  if (t < 0.0 || t > len) return -kInf;
+  return a.z + s - r;
+}
+
+// Range of t in [0, 1] for which a + t (b - a) lies within distance R of p in xy.
+bool disc_interval(Vec3 a, Vec3 b, Vec2 p, double R, double& t0, double& t1) {
+  const Vec2 d = b.xy() - a.xy();
+  const Vec2 f = a.xy() - p;
+  const double qa = norm_sq(d), qb = 2.0 * dot(f, d), qc = norm_sq(f) - R * R;
+  if (qa < 1e-300) {
+    if (qc > 0.0) return false;
+    t0 = 0.0;
+    t1 = 1.0;
+    return true;
+  }
+  const double disc = qb * qb - 4.0 * qa * qc;
+  if (disc < 0.0) return false;
+  const double sq = std::sqrt(disc);
+  t0 = std::max(0.0, (-qb - sq) / (2.0 * qa));
+  t1 = std::min(1.0, (-qb + sq) / (2.0 * qa));
+  return t0 <= t1;
+}
+
+}  // namespace
+
+Result<DropCutter> DropCutter::build(const Mesh& mesh, const CutterShape& cutter,
+                                     const DropCutterOptions& options) {
+  if (mesh.empty()) return bad_input("drop-cutter: the mesh has no triangles");
+  if (!(cutter.radius_mm > 0.0) || !std::isfinite(cutter.radius_mm))
+    return bad_parameter("drop-cutter: tool radius " + std::to_string(cutter.radius_mm) +
+                         " mm must be positive");
+  if (cutter.corner_radius_mm < 0.0 || cutter.corner_radius_mm > cutter.radius_mm + 1e-12)
+    return bad_parameter("drop-cutter: corner radius " + std::to_string(cutter.corner_radius_mm) +
+                         " mm must lie in [0, tool radius]");
+  if (options.cell_size_mm < 0.0) return bad_parameter("drop-cutter: negative cell size");
+  DropCutter dc;
+  dc.cutter_ = cutter;
+  dc.cutter_.corner_radius_mm = std::min(cutter.corner_radius_mm, cutter.radius_mm);
+  dc.tris_.reserve(mesh.size());
+  for (std::size_t t = 0; t < mesh.size(); ++t) {
+    Tri tri;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& v = mesh.corner(t, k);
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        return bad_input("drop-cutter: triangle " + std::to_string(t) +
+                         " has a non-finite coordinate");
+      tri.p[static_cast<std::size_t>(k)] = v;
+      tri.box.add(v.xy());
+      dc.bounds_.add(v);
+    }
+    tri.zmax = std::max({tri.p[0].z, tri.p[1].z, tri.p[2].z});
+    Vec3 n = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
+    if (n.z < 0.0) n = -n;
+    tri.n = normalized(n);
+    tri.d = dot(tri.n, tri.p[0]);
+    dc.tris_.push_back(tri);
+  }
+
+  // Grid over the mesh's xy bounds grown by R; each triangle goes into every cell that comes
+  // within R of its xy box, so a query needs only the cell under the tool axis.
+  const double R = dc.cutter_.radius_mm;
+  const Box2 area = dc.bounds_.xy().inflated(R + 1e-9);
+  double cell = options.cell_size_mm > 0.0 ? options.cell_size_mm : R / 4.0;
+  cell = std::max(cell, std::max(area.size().x, area.size().y) / 4096.0);
+  auto count_entries = [&](double c, int nx, int ny) {
+    std::size_t total = 0;
+    for (const Tri& tri : dc.tris_) {
+      const int i0 = std::max(0, static_cast<int>((tri.box.min.x - R - area.min.x) / c));
+      const int i1 = std::min(nx - 1, static_cast<int>((tri.box.max.x + R - area.min.x) / c));
+      const int j0 = std::max(0, static_cast<int>((tri.box.min.y - R - area.min.y) / c));
+      const int j1 = std::min(ny - 1, static_cast<int>((tri.box.max.y + R - area.min.y) / c));
+      total += static_cast<std::size_t>(i1 - i0 + 1) * static_cast<std::size_t>(j1 - j0 + 1);
+    }
+    return total;
+  };
+  int nx = 0, ny = 0;
+  for (;;) {
+    nx = std::max(1, static_cast<int>(std::ceil(area.size().x / cell)));
+    ny = std::max(1, static_cast<int>(std::ceil(area.size().y / cell)));
+    if (count_entries(cell, nx, ny) <= options.max_index_entries) break;
+    cell *= 1.5;
+  }
+  dc.cell_ = cell;
+  dc.origin_ = area.min;
+  dc.nx_ = nx;
+  dc.ny_ = ny;
+  const std::size_t ncell = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  std::vector<std::uint32_t> counts(ncell + 1, 0);
+  auto for_cells = [&](const Tri& tri, auto&& fn) {
+    const int i0 = std::max(0, static_cast<int>((tri.box.min.x - R - area.min.x) / cell));
+    const int i1 = std::min(nx - 1, static_cast<int>((tri.box.max.x + R - area.min.x) / cell));
+    const int j0 = std::max(0, static_cast<int>((tri.box.min.y - R - area.min.y) / cell));
+    const int j1 = std::min(ny - 1, static_cast<int>((tri.box.max.y + R - area.min.y) / cell));
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        Box2 cb{{area.min.x + i * cell, area.min.y + j * cell},
+                {area.min.x + (i + 1) * cell, area.min.y + (j + 1) * cell}};
+        // Distance between the two boxes: skip cells only a corner of the square reaches.
+        const double dx = std::max({cb.min.x - tri.box.max.x, 0.0, tri.box.min.x - cb.max.x});
+        const double dy = std::max({cb.min.y - tri.box.max.y, 0.0, tri.box.min.y - cb.max.y});
+        if (dx * dx + dy * dy > R * R) continue;
+        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) +
+           static_cast<std::size_t>(i));
+      }
+    }
+  };
+  for (const Tri& tri : dc.tris_)
+    for_cells(tri, [&](std::size_t c) { ++counts[c + 1]; });
+  for (std::size_t c = 0; c < ncell; ++c)
+    counts[c + 1] += counts[c];
+  dc.cell_start_ = counts;
+  dc.cell_items_.resize(counts[ncell]);
+  std::vector<std::uint32_t> fill(counts.begin(), counts.end() - 1);
+  for (std::size_t t = 0; t < dc.tris_.size(); ++t)
+    for_cells(dc.tris_[t],
+              [&](std::size_t c) { dc.cell_items_[fill[c]++] = static_cast<std::uint32_t>(t); });
+  // Highest triangles first, so that a query can stop early; ties by index (deterministic).
+  parallel_for(ncell, 0, [&](std::size_t c) {
+    auto b = dc.cell_items_.begin() + dc.cell_start_[c];
+    auto e = dc.cell_items_.begin() + dc.cell_start_[c + 1];
+    std::sort(b, e, [&](std::uint32_t x, std::uint32_t y) {
+      const double zx = dc.tris_[x].zmax, zy = dc.tris_[y].zmax;
+      return zx != zy ? zx > zy : x < y;
+    });
+  });
+  return dc;
+}
+
+void DropCutter::test_triangle(const Tri& t, std::size_t index, Vec2 p, DropResult& best) const {
+  const double R = cutter_.radius_mm;
+  const double rc = cutter_.corner_radius_mm;
+  const double R2 = R * R;
+  const bool ball = rc >= R;
+  // Vertices.
+  for (const Vec3& v : t.p) {
+    const double d2 = norm_sq(v.xy() - p);
+    if (d2 > R2) continue;
+    consider(best, v.z - profile_height(cutter_, std::sqrt(d2)), ContactKind::kVertex, index);
+  }
+  // Facet interior.
+  if (t.n.z > 1e-12) {
+    const Vec2 nxy{t.n.x, t.n.y};
+    const double nh = norm(nxy);
+    if (rc > 0.0) {
+      // The corner torus meets the plane where its sub-ball (radius rc, centre on the ring of
+      // radius R - rc) is furthest down the slope: offset -nxy/|nxy| * (R - rc) from the axis.
+      const Vec2 c = (nh > 1e-15 && !ball) ? p - nxy * ((R - rc) / nh) : p;
+      const double zc = (rc + t.d - t.n.x * c.x - t.n.y * c.y) / t.n.z;
+      const Vec2 q{c.x - rc * t.n.x, c.y - rc * t.n.y};
+      if (inside_xy(t.p, q)) consider(best, zc - rc, ContactKind::kFacet, index);
+    } else {
+      // Flat end: the plane is highest over the disc at its rim, up the slope.
+      const Vec2 q = nh > 1e-15 ? p - nxy * (R / nh) : p;
+      if (inside_xy(t.p, q))
+        consider(best, (t.d - t.n.x * q.x - t.n.y * q.y) / t.n.z, ContactKind::kFacet, index);
+    }
+  }
+  // Edges.
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = t.p[static_cast<std::size_t>(k)];
+    const Vec3 b = t.p[static_cast<std::size_t>((k + 1) % 3)];
+    if (ball) {
+      consider(best, ball_edge(a, b, p, R), ContactKind::kEdge, index);
+      continue;
+    }
+    double t0 = 0.0, t1 = 0.0;
+    if (!disc_interval(a, b, p, R, t0, t1)) continue;
+    const Vec3 e = b - a;
+    auto f = [&](double s) {
+      const Vec3 q = a + e * s;
+      return q.z - profile_height(cutter_, std::min(R, norm(q.xy() - p)));
+    };
+    if (rc <= 0.0) {
+      consider(best, std::max(f(t0), f(t1)), ContactKind::kEdge, index);
+      continue;
+    }
+    // f is concave along the edge (a convex cutter against a line): golden section.
+    constexpr double kG = 0.6180339887498949;
+    double lo = t0, hi = t1;
+    double m1 = hi - kG * (hi - lo), m2 = lo + kG * (hi - lo);
+    double f1 = f(m1), f2 = f(m2);
+    for (int it = 0; it < 80 && (hi - lo) * norm(e) > 1e-10; ++it) {
+      if (f1 < f2) {
+        lo = m1;
+        m1 = m2;
+        f1 = f2;
+        m2 = lo + kG * (hi - lo);
+        f2 = f(m2);
+      } else {
+        hi = m2;
+        m2 = m1;
+        f2 = f1;
+        m1 = hi - kG * (hi - lo);
+        f1 = f(m1);
+      }
+    }
+    consider(best, std::max({f1, f2, f(t0), f(t1)}), ContactKind::kEdge, index);
+  }
+}
+
+DropResult DropCutter::drop(Vec2 p) const {
+  DropResult best;
+  const double fx = (p.x - origin_.x) / cell_, fy = (p.y - origin_.y) / cell_;
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < nx_ && fy < ny_)) return best;
+  const std::size_t c =
+      static_cast<std::size_t>(static_cast<int>(fy)) * static_cast<std::size_t>(nx_) +
+      static_cast<std::size_t>(static_cast<int>(fx));
+  const double R = cutter_.radius_mm;
+  for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+    const Tri& t = tris_[cell_items_[k]];
+    if (t.zmax <= best.tip_z) break;  // sorted: nothing further down the list can win
+    const double d = box_distance(t.box, p);
+    if (d > R) continue;
+    if (t.zmax - profile_height(cutter_, d) <= best.tip_z) continue;
+    test_triangle(t, cell_items_[k], p, best);
+  }
+  return best;
+}
+
+DropResult DropCutter::drop_brute_force(Vec2 p) const {
+  DropResult best;
+  for (std::size_t k = 0; k < tris_.size(); ++k) {
+    if (box_distance(tris_[k].box, p) > cutter_.radius_mm) continue;
+    test_triangle(tris_[k], k, p, best);
+  }
+  return best;
+}
+
+std::vector<double> grid_positions(double from, double to, double step) {
+  std::vector<double> out;
+  if (!(step > 0.0) || !(to >= from)) return out;
+  const auto n = static_cast<std::size_t>(std::floor((to - from) / step + 1e-9));
+  out.reserve(n + 2);
+  for (std::size_t k = 0; k <= n; ++k)
+    out.push_back(from + static_cast<double>(k) * step);
+  if (out.back() < to - 1e-9) out.push_back(to);
+  return out;
+}
+
+std::vector<double> ClGrid::line_positions() const {
+  return direction == Axis::kX ? grid_positions(region.min.y, region.max.y, stepover_mm)
+                               : grid_positions(region.min.x, region.max.x, stepover_mm);
+}
+std::vector<double> ClGrid::point_positions() const {
+  return direction == Axis::kX ? grid_positions(region.min.x, region.max.x, sampling_mm)
+                               : grid_positions(region.min.y, region.max.y, sampling_mm);
+}
+
+Status validate(const ClGrid& grid) {
+  if (grid.region.empty()) return bad_parameter("CL grid: empty region");
+  if (!(grid.stepover_mm > 0.0))
+    return bad_parameter("CL grid: stepover " + std::to_string(grid.stepover_mm) +
+                         " mm must be positive");
+  if (!(grid.sampling_mm > 0.0))
+    return bad_parameter("CL grid: sampling " + std::to_string(grid.sampling_mm) +
+                         " mm must be positive");
+  if (grid.direction == Axis::kZ) return bad_parameter("CL grid: lines must run along x or y");
+  const Vec2 s = grid.region.size();
+  if ((s.x / grid.sampling_mm + 1) * (s.y / grid.stepover_mm + 1) > 2e8)
+    return bad_parameter("CL grid: more than 200 million points");
+  return {};
+}
+
+Result<std::vector<Vec3>> drop_grid(const DropCutter& cutter, const ClGrid& grid, double floor_z,
+                                    const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(validate(grid));
+  const std::vector<double> lines = grid.line_positions();
+  const std::vector<double> pts = grid.point_positions();
+  std::vector<Vec3> out(lines.size() * pts.size());
+  parallel_for(lines.size(), ctx.threads, [&](std::size_t i) {
+    if (ctx.cancelled()) return;
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const Vec2 p = grid.direction == Axis::kX ? Vec2{pts[k], lines[i]} : Vec2{lines[i], pts[k]};
+      const DropResult r = cutter.drop(p);
+      out[i * pts.size() + k] = {p.x, p.y, r.hit() ? std::max(r.tip_z, floor_z) : floor_z};
+    }
+  });
+  if (ctx.cancelled()) return Status{Error::kCancelled, "drop-cutter: cancelled"};
+  return out;
+}
+
+}  // namespace swarf

@@ -1,0 +1,391 @@
+// Eq. (1) evaluated on a scan line without polygon unions: see envelope.h for the argument.
+#include "swarf/trislice/envelope.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace swarf {
+#ifdef SWARF_ENV_COUNT
+std::atomic<long> g_blocks{0}, g_bins{0}, g_segs{0};
+#endif
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, int stride) {
+  SliceFamily strided;
+  if (stride > 1) {
+    // Keep the slices on the coarser lattice (level index divisible by stride), so coarse
+    // and fine envelopes of one model share their slices.
+    strided.axis = family_in.axis;
+    strided.pitch_mm = family_in.pitch_mm * stride;
+    const long base = std::lround(family_in.first_level / family_in.pitch_mm);
+    bool first = true;
+    for (std::size_t j = 0; j < family_in.size(); ++j) {
+      const long k = base + static_cast<long>(j);
+      if (((k % stride) + stride) % stride != 0) continue;
+      if (first) strided.first_level = family_in.level(j);
+      first = false;
+      strided.slices.push_back(family_in.slices[j]);
+    }
+  }
+  const SliceFamily& family = stride > 1 ? strided : family_in;
+  SliceEnvelope e;
+  e.axis_ = family.axis;
+  e.first_ = family.first_level;
+  e.pitch_ = family.pitch_mm;
+  e.n_ = family.size();
+  e.bin_ = bin_mm > 0.0 ? bin_mm : 1.0;
+  // Upward-facing edges of every slice, as (s, z) segments. Rings are normalized (outers
+  // counter-clockwise, holes clockwise in the plane's (u, v)), so the outward normal of an
+  // edge (du, dv) is (dv, -du) and its z component says whether the edge faces up. An edge
+  // facing down can never be the first contact of a disc coming from above (the disc would
+  // have to cross the solid to reach it).
+  std::vector<std::vector<Seg>> per(e.n_);
+  double smin = kInf, smax = -kInf;
+  for (std::size_t j = 0; j < e.n_; ++j) {
+    for (const Ring& ring : family.slices[j].rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+        const double du = b.x - a.x, dv = b.y - a.y;
+        double nz = 0.0;
+        Seg s{};
+        if (family.axis == Axis::kX) {  // (u, v) = (y, z)
+          nz = -du;
+          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0};
+        } else {  // kY: (u, v) = (z, x)
+          nz = dv;
+          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0};
+        }
+        if (nz < -1e-12 * std::hypot(du, dv)) continue;
+        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0};
+        // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
+        const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
+        if (ds_ > 1e-12 && len > 0.0) {
+          s.ns = -dz_ / len;
+          s.nz = ds_ / len;
+          s.slope = dz_ / ds_;
+        }  // else vertical (nz stays 0): only its end points can be touched
+        smin = std::min(smin, s.s0);
+        smax = std::max(smax, s.s1);
+        per[j].push_back(s);
+      }
+    }
+  }
+  if (smin > smax) {
+    smin = 0.0;
+    smax = 0.0;
+  }
+  e.smin_ = smin;
+  e.nb_ = static_cast<int>(std::floor((smax - smin) / e.bin_)) + 1;
+  const std::size_t nb = static_cast<std::size_t>(e.nb_);
+  std::size_t total = 0;
+  for (const auto& v : per)
+    total += v.size();
+  e.seg_.reserve(total);
+  e.start_.assign(e.n_ * nb + 1, 0);
+  e.binmax_.assign(e.n_ * nb, -kInf);
+  auto bin_of = [&](double s) {
+    return std::clamp(static_cast<int>(std::floor((s - e.smin_) / e.bin_)), 0, e.nb_ - 1);
+  };
+  // Count, then fill (CSR).
+  for (std::size_t j = 0; j < e.n_; ++j)
+    for (const Seg& s : per[j])
+      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
+        ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
+  for (std::size_t c = 0; c < e.n_ * nb; ++c)
+    e.start_[c + 1] += e.start_[c];
+  e.items_.resize(e.start_.back());
+  std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
+  for (std::size_t j = 0; j < e.n_; ++j) {
+    for (const Seg& s : per[j]) {
+      const auto id = static_cast<std::uint32_t>(e.seg_.size());
+      e.seg_.push_back(s);
+      e.slice_of_.push_back(static_cast<std::uint32_t>(j));
+      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
+        const std::size_t c = j * nb + static_cast<std::size_t>(b);
+        e.items_[fill[c]++] = id;
+        e.binmax_[c] = std::max(e.binmax_[c], std::max(s.z0, s.z1));
+      }
+    }
+  }
+  // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
+  // kBlock^2 slices: a query rejects far slices wholesale with few checks.
+  e.nbc_ = (e.nb_ + kCoarse - 1) / kCoarse;
+  const std::size_t nbc = static_cast<std::size_t>(e.nbc_);
+  const std::size_t nblock = (e.n_ + kBlock - 1) / kBlock;
+  const std::size_t nsuper = (nblock + kBlock - 1) / kBlock;
+  e.blockmax_.assign(nblock * nbc, -kInf);
+  e.supermax_.assign(nsuper * nbc, -kInf);
+  for (std::size_t j = 0; j < e.n_; ++j)
+    for (std::size_t b = 0; b < nb; ++b) {
+      const double v = e.binmax_[j * nb + b];
+      double& m = e.blockmax_[(j / kBlock) * nbc + b / kCoarse];
+      m = std::max(m, v);
+      double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
+      sm = std::max(sm, v);
+    }
+  return e;
+}
+
+std::size_t SliceEnvelope::memory_bytes() const {
+  return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
+         (start_.size() + items_.size()) * sizeof(std::uint32_t) +
+         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double);
+}
+
+double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
+  if (n_ == 0 || !(r > 0.0)) return best;
+  const double q = axis_ == Axis::kX ? p.x : p.y;  // across the slices
+  const double s = axis_ == Axis::kX ? p.y : p.x;  // along them
+  const long n = static_cast<long>(n_);
+  const long jlo = std::max(0L, static_cast<long>(std::ceil((q - r - first_) / pitch_ - 1e-9)));
+  const long jhi = std::min(n - 1, static_cast<long>(std::floor((q + r - first_) / pitch_ + 1e-9)));
+  if (jlo > jhi) return best;
+  const long jc = std::clamp(std::lround((q - first_) / pitch_), jlo, jhi);
+  const long B = static_cast<long>(kBlock);
+  const std::size_t nb = static_cast<std::size_t>(nb_);
+  const std::size_t nbc = static_cast<std::size_t>(nbc_);
+  const double smax = smin_ + bin_ * nb_;
+  auto bins = [&](double rho, int& b0, int& b1) {
+    if (s + rho < smin_ || s - rho > smax) return false;
+    b0 = std::clamp(static_cast<int>(std::floor((s - rho - smin_) / bin_)), 0, nb_ - 1);
+    b1 = std::clamp(static_cast<int>(std::floor((s + rho - smin_) / bin_)), 0, nb_ - 1);
+    return true;
+  };
+  // Can a disc of radius sqrt(rho2) centred at s, resting on the top of bin b's box (height
+  // top), put its centre above `best`? Squared, so no square root per bin.
+  auto can_beat = [&](int b, double top, double rho2) {
+    const double lo = smin_ + bin_ * b, hi = lo + bin_;
+    const double dx = std::max({lo - s, 0.0, s - hi});
+    const double room = rho2 - dx * dx;
+    if (room < 0.0) return false;
+    const double need = best - top;
+    return need < 0.0 || room > need * need;
+  };
+  auto level = [&](long j) { return first_ + static_cast<double>(j) * pitch_; };
+  std::uint32_t best_id = kNoHint;
+  // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
+  // where the upward normal points at the centre).
+  auto drop = [&](std::uint32_t id, double rho, double rho2) {
+    const Seg& g = seg_[id];
+    double c = -kInf;
+    const double d0 = s - g.s0, d1 = s - g.s1;
+    if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
+    if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
+    if (g.nz > 0.0) {
+      const double qs = s - rho * g.ns;
+      if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
+    }
+    if (c > best) {
+      best = c;
+      best_id = id;
+    }
+  };
+  // Scan-line coherence: the segment that held the previous point up usually holds this one
+  // up too (or nearly); starting from its height lets the bounds below prune from the start.
+  if (hint != nullptr && *hint < seg_.size()) {
+    const double dq = q - level(static_cast<long>(slice_of_[*hint]));
+    const double rho2 = r * r - dq * dq;
+    if (rho2 >= 0.0) drop(*hint, std::sqrt(rho2), rho2);
+  }
+  // Can a disc of squared radius rho2 at s, resting on the top of coarse bin cb, beat best?
+  auto coarse_can_beat = [&](int cb, double top, double rho2) {
+    const double lo = smin_ + bin_ * kCoarse * cb, hi = lo + bin_ * kCoarse;
+    const double dx = std::max({lo - s, 0.0, s - hi});
+    const double room = rho2 - dx * dx;
+    if (room < 0.0) return false;
+    const double need = best - top;
+    return need < 0.0 || room > need * need;
+  };
+  // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
+  auto reach2 = [&](long j0, long j1) {
+    const double l0 = level(j0), l1 = level(j1);
+    const double dmin = (q >= l0 && q <= l1) ? 0.0 : std::min(std::fabs(q - l0), std::fabs(q - l1));
+    return std::max(0.0, r * r - dmin * dmin);
+  };
+  auto coarse_range = [&](double rho, int& c0, int& c1) {
+    int b0 = 0, b1 = -1;
+    if (!bins(rho, b0, b1)) return false;
+    c0 = b0 / static_cast<int>(kCoarse);
+    c1 = b1 / static_cast<int>(kCoarse);
+    return true;
+  };
+  auto visit_block = [&](long blk) {
+    const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
+    if (j0 > j1) return;
+    const double rm2 = reach2(j0, j1);
+    int c0 = 0, c1 = -1;
+    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
+    // Fine bins of this block that can still beat the best centre; only those are opened.
+    int pass[4096];
+    int npass = 0;
+    int b0 = 0, b1 = -1;
+    bins(std::sqrt(rm2), b0, b1);
+    for (int cb = c0; cb <= c1; ++cb) {
+      if (!coarse_can_beat(
+              cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
+              rm2))
+        continue;
+      for (int b = std::max(b0, cb * static_cast<int>(kCoarse));
+           b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
+           npass < 4096;
+           ++b)
+        pass[npass++] = b;
+    }
+    if (npass == 0) return;
+    for (long j = j0; j <= j1; ++j) {
+      const double dq = q - level(j);
+      const double rho2 = r * r - dq * dq;
+      if (rho2 < 0.0) continue;
+      const double rho = std::sqrt(rho2);  // seed 001 Eq. (1), with (i - j) ds -> y - y_j
+      for (int m = 0; m < npass; ++m) {
+        const int b = pass[m];
+        const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
+        if (!can_beat(b, binmax_[cell], rho2)) continue;
+        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
+          drop(items_[k], rho, rho2);
+      }
+    }
+  };
+  const long SB = B * B;
+  auto visit_super = [&](long sup) {
+    const long j0 = std::max(jlo, sup * SB), j1 = std::min(jhi, sup * SB + SB - 1);
+    if (j0 > j1) return;
+    const double rm2 = reach2(j0, j1);
+    int c0 = 0, c1 = -1;
+    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
+    bool any = false;
+    for (int cb = c0; cb <= c1 && !any; ++cb)
+      any = coarse_can_beat(
+          cb, supermax_[static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(cb)], rm2);
+    if (!any) return;
+    // Blocks of this super-block, nearest to q first.
+    const long b_lo = j0 / B, b_hi = j1 / B;
+    const long b_c = std::clamp(jc / B, b_lo, b_hi);
+    visit_block(b_c);
+    for (long k = 1; b_c - k >= b_lo || b_c + k <= b_hi; ++k) {
+      if (b_c - k >= b_lo) visit_block(b_c - k);
+      if (b_c + k <= b_hi) visit_block(b_c + k);
+    }
+  };
+  const long sc = jc / SB, slo = jlo / SB, shi = jhi / SB;
+  visit_super(sc);
+  for (long k = 1; sc - k >= slo || sc + k <= shi; ++k) {
+    if (sc - k >= slo) visit_super(sc - k);
+    if (sc + k <= shi) visit_super(sc + k);
+  }
+  if (hint != nullptr && best_id != kNoHint) *hint = best_id;
+  return best;
+}
+
+LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int stride) {
+  LevelEnvelope e;
+  e.cell_ = cell_mm > 0.0 ? cell_mm : 1.0;
+  const long base = fam.pitch_mm > 0.0 ? std::lround(fam.first_level / fam.pitch_mm) : 0;
+  Box2 box;
+  for (std::size_t j = 0; j < fam.size(); ++j) {
+    const long k = base + static_cast<long>(j);
+    if (stride > 1 && ((k % stride) + stride) % stride != 0) continue;
+    const double z = fam.level(j);
+    for (const Ring& ring : fam.slices[j].rings)
+      for (std::size_t q = 0; q < ring.size(); ++q) {
+        const Vec2 a = ring[q], b = ring[(q + 1) % ring.size()];
+        e.seg_.push_back({a.x, a.y, b.x, b.y, z});
+        box.add(a);
+      }
+  }
+  if (e.seg_.empty()) return e;
+  e.origin_ = box.min;
+  e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
+  e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
+  auto cells = [&](const Seg& g, auto&& fn) {
+    const int i0 = static_cast<int>(std::floor((std::min(g.x0, g.x1) - e.origin_.x) / e.cell_));
+    const int i1 = static_cast<int>(std::floor((std::max(g.x0, g.x1) - e.origin_.x) / e.cell_));
+    const int j0 = static_cast<int>(std::floor((std::min(g.y0, g.y1) - e.origin_.y) / e.cell_));
+    const int j1 = static_cast<int>(std::floor((std::max(g.y0, g.y1) - e.origin_.y) / e.cell_));
+    for (int j = std::max(0, j0); j <= std::min(e.ny_ - 1, j1); ++j)
+      for (int i = std::max(0, i0); i <= std::min(e.nx_ - 1, i1); ++i)
+        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
+           static_cast<std::size_t>(i));
+  };
+  e.start_.assign(ncell + 1, 0);
+  for (const Seg& g : e.seg_)
+    cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
+  for (std::size_t c = 0; c < ncell; ++c)
+    e.start_[c + 1] += e.start_[c];
+  e.items_.resize(e.start_.back());
+  std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
+  for (std::size_t k = 0; k < e.seg_.size(); ++k)
+    cells(e.seg_[k], [&](std::size_t c) { e.items_[fill[c]++] = static_cast<std::uint32_t>(k); });
+  // Highest level first in every cell (ties by index: deterministic).
+  for (std::size_t c = 0; c < ncell; ++c)
+    std::sort(e.items_.begin() + e.start_[c], e.items_.begin() + e.start_[c + 1],
+              [&](std::uint32_t a, std::uint32_t b) {
+                return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
+              });
+  return e;
+}
+
+std::size_t LevelEnvelope::memory_bytes() const {
+  return seg_.size() * sizeof(Seg) + (start_.size() + items_.size()) * sizeof(std::uint32_t);
+}
+
+double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
+  if (seg_.empty() || !(r > 0.0)) return best;
+  const double r2 = r * r;
+  const int i0 = std::max(0, static_cast<int>(std::floor((p.x - r - origin_.x) / cell_)));
+  const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + r - origin_.x) / cell_)));
+  const int j0 = std::max(0, static_cast<int>(std::floor((p.y - r - origin_.y) / cell_)));
+  const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y + r - origin_.y) / cell_)));
+  for (int j = j0; j <= j1; ++j) {
+    const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
+    const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
+    for (int i = i0; i <= i1; ++i) {
+      const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
+      const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
+      const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
+      if (room < 0.0) continue;
+      const std::size_t c =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+        const Seg& g = seg_[items_[k]];
+        const double need = best - g.z;
+        if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
+        const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+        const double len2 = ex * ex + ey * ey;
+        double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+        const double d2 = qx * qx + qy * qy;
+        if (d2 > r2) continue;
+        best = std::max(best, g.z + std::sqrt(r2 - d2));
+      }
+    }
+  }
+  return best;
+}
+
+TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride) {
+  TriSliceTop t;
+  t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
+  t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
+  t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+  return t;
+}
+
+double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* hint) const {
+  const SliceEnvelope& a = primary == Axis::kX ? x_ : y_;
+  const SliceEnvelope& b = primary == Axis::kX ? y_ : x_;
+  std::uint32_t* ha = hint != nullptr ? &hint->primary : nullptr;
+  std::uint32_t* hb = hint != nullptr ? &hint->secondary : nullptr;
+  return z_.centre_height(p, r_mm,
+                          b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb));
+}
+
+}  // namespace swarf

@@ -1,0 +1,309 @@
+// seed 001 section 3.1: scanning and contour paths for a ball end mill from the tri-slice
+// model, and the roughing scheme of Table 1.
+#include "swarf/trislice/surface_paths.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "swarf/core/parallel.h"
+#include "swarf/toolpath/postprocess.h"
+
+namespace swarf {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::vector<double> positions(double from, double to, double step) {
+  std::vector<double> out;
+  if (!(step > 0.0) || !(to >= from)) return out;
+  const auto n = static_cast<std::size_t>(std::floor((to - from) / step + 1e-9));
+  for (std::size_t k = 0; k <= n; ++k)
+    out.push_back(from + static_cast<double>(k) * step);
+  if (out.back() < to - 1e-9) out.push_back(to);
+  return out;
+}
+
+Status need_ball(const Tool& tool) {
+  SWARF_RETURN_IF_ERROR(validate(tool));
+  if (tool.kind != ToolKind::kBall)
+    return bad_parameter("tri-slice paths need a ball end mill (seed 001 section 4.3), got " +
+                         tool.description());
+  return {};
+}
+
+double clearance_of(double given, const TriSliceModel& model, double extra_top) {
+  return std::isfinite(given) ? given : std::max(model.bounds.max.z, extra_top) + 5.0;
+}
+
+// One line of CL points as moves: rapid over the start, plunge, feed along, retract. The
+// plunge is safe for a 3-axis cutter: the CL point is the lowest safe height over its xy.
+void emit_line(Toolpath& tp, const std::vector<Vec3>& pts, double feed, double plunge) {
+  if (pts.empty()) return;
+  tp.rapid_to({pts.front().x, pts.front().y, tp.clearance_z_mm});
+  tp.plunge_to(pts.front().z, plunge);
+  for (std::size_t k = 1; k < pts.size(); ++k)
+    tp.feed_to(pts[k], feed);
+}
+
+// Lines (each in the + direction) to moves, one-way or zig-zag. Points above clip_z are
+// lowered to it (a roughing layer above the stock cuts air at the stock top) and a line that
+// lies entirely at the clip height is dropped.
+Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParams& p, double clip_z,
+                           Toolpath tp, const std::function<double(Vec2)>& cl_at) {
+  bool reverse = false;
+  bool linked = false;  // the tool is down at the end of the previous line
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::vector<Vec3>& line = lines[i];
+    bool any = false;
+    for (Vec3& q : line) {
+      if (q.z < clip_z - 1e-9) any = true;
+      q.z = std::min(q.z, clip_z);
+    }
+    if (!any || line.empty()) {
+      if (linked) tp.retract();
+      linked = false;
+      continue;
+    }
+    if (p.zigzag && reverse) std::reverse(line.begin(), line.end());
+    std::vector<Vec3> pts = p.tolerance_mm > 0.0 ? simplify_polyline(line, p.tolerance_mm) : line;
+    if (p.zigzag && linked) {
+      // Stay down: follow the CL along the region edge from the last point to the next line,
+      // so the link never gouges and never lifts more than the surface asks for.
+      const Vec3 a = tp.position(), b = pts.front();
+      const double len = distance(a.xy(), b.xy());
+      const int n = std::max(1, static_cast<int>(std::ceil(len / p.sampling_mm)));
+      for (int k = 1; k < n; ++k) {
+        const Vec2 xy = a.xy() + (b.xy() - a.xy()) * (static_cast<double>(k) / n);
+        tp.feed_to({xy.x, xy.y, std::min(cl_at(xy), clip_z)}, p.feed_mm_min);
+      }
+      tp.feed_to(b, p.feed_mm_min);
+      for (std::size_t k = 1; k < pts.size(); ++k)
+        tp.feed_to(pts[k], p.feed_mm_min);
+    } else {
+      if (linked) tp.retract();
+      emit_line(tp, pts, p.feed_mm_min, p.plunge_feed_mm_min);
+    }
+    linked = p.zigzag;
+    if (!p.zigzag) tp.retract();
+    reverse = !reverse;
+  }
+  if (linked) tp.retract();
+  return tp;
+}
+
+Toolpath new_toolpath(const Tool& tool, std::string name, double clearance) {
+  Toolpath tp;
+  tp.name = std::move(name);
+  tp.tool_number = tool.number;
+  tp.tool_description = tool.description();
+  tp.tool_diameter_mm = tool.diameter_mm;
+  tp.clearance_z_mm = clearance;
+  return tp;
+}
+
+}  // namespace
+
+Status validate(const ScanParams& p) {
+  if (p.direction == Axis::kZ) return bad_parameter("scan direction must be x or y");
+  if (!(p.stepover_mm > 0.0))
+    return bad_parameter("stepover " + std::to_string(p.stepover_mm) + " mm must be positive");
+  if (!(p.sampling_mm > 0.0))
+    return bad_parameter("sampling " + std::to_string(p.sampling_mm) + " mm must be positive");
+  if (!(p.stock_to_leave_mm >= 0.0)) return bad_parameter("stock to leave must be >= 0 mm");
+  if (!(p.tolerance_mm >= 0.0)) return bad_parameter("tolerance must be >= 0 mm");
+  if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0))
+    return bad_parameter("feeds must be positive");
+  return {};
+}
+
+Status validate(const RoughingParams& p) {
+  if (p.layers < 1 || p.layers > 1000) return bad_parameter("rough layers must be in 1..1000");
+  if (!(p.stepdown_mm > 0.0)) return bad_parameter("roughing stepdown must be positive");
+  if (!(p.stepover_mm > 0.0)) return bad_parameter("roughing stepover must be positive");
+  if (!(p.margin_mm >= 0.0)) return bad_parameter("roughing margin must be >= 0 mm");
+  if (!(p.min_pitch_mm >= 0.0)) return bad_parameter("roughing min pitch must be >= 0 mm");
+  if (!(p.sampling_mm >= 0.0)) return bad_parameter("roughing sampling must be >= 0 mm");
+  return {};
+}
+
+Status validate(const ContourParams& p) {
+  if (!(p.stepdown_mm > 0.0)) return bad_parameter("contour stepdown must be positive");
+  if (!(p.stock_to_leave_mm >= 0.0)) return bad_parameter("stock to leave must be >= 0 mm");
+  if (p.radial_passes < 1) return bad_parameter("radial passes must be >= 1");
+  if (!(p.radial_step_mm > 0.0)) return bad_parameter("radial step must be positive");
+  if (!(p.arc_tolerance_mm > 0.0)) return bad_parameter("arc tolerance must be positive");
+  if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0))
+    return bad_parameter("feeds must be positive");
+  return {};
+}
+
+Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
+                                                     double tool_radius_mm, double extra_mm,
+                                                     const ScanParams& p, const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(validate(p));
+  if (!(tool_radius_mm > 0.0)) return bad_parameter("tool radius must be positive");
+  const Box2 region = p.region.empty() ? bounds.xy() : p.region;
+  if (region.empty()) return bad_parameter("scan: empty region");
+  const bool along_x = p.direction == Axis::kX;
+  const std::vector<double> across = along_x ? positions(region.min.y, region.max.y, p.stepover_mm)
+                                             : positions(region.min.x, region.max.x, p.stepover_mm);
+  const std::vector<double> along = along_x ? positions(region.min.x, region.max.x, p.sampling_mm)
+                                            : positions(region.min.y, region.max.y, p.sampling_mm);
+  if (static_cast<double>(across.size()) * static_cast<double>(along.size()) > 2e8)
+    return bad_parameter("scan: more than 200 million CL points");
+  const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : bounds.min.z;
+  const double R = tool_radius_mm + extra_mm;
+  // The family whose planes contain the scan lines is asked first: Eq. (1) exactly there.
+  const Axis primary = along_x ? Axis::kY : Axis::kX;
+  std::vector<std::vector<Vec3>> lines(across.size());
+  parallel_for(across.size(), ctx.threads, [&](std::size_t i) {
+    if (ctx.cancelled()) return;
+    ScanHint hint;
+    std::vector<Vec3>& line = lines[i];
+    line.reserve(along.size());
+    for (double s : along) {
+      const Vec2 xy = along_x ? Vec2{s, across[i]} : Vec2{across[i], s};
+      const double c = top.centre_height(xy, R, primary, &hint);
+      line.push_back({xy.x, xy.y, c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z});
+    }
+  });
+  if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
+  return lines;
+}
+
+Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& top,
+                                const Tool& tool, const ScanParams& p, const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  auto lines = scan_cl_lines(top, model.bounds, tool.radius(), p.stock_to_leave_mm, p, ctx);
+  if (!lines.ok()) return lines.status();
+  return scan_finishing_from_lines(model, top, tool, p, std::move(lines).value());
+}
+
+Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
+                                           const Tool& tool, const ScanParams& p,
+                                           std::vector<std::vector<Vec3>> lines) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  SWARF_RETURN_IF_ERROR(validate(p));
+  Toolpath tp =
+      new_toolpath(tool, "tri-slice scan finishing", clearance_of(p.clearance_z_mm, model, -kInf));
+  const double R = tool.radius() + p.stock_to_leave_mm;
+  const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
+  const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
+  auto cl_at = [&](Vec2 xy) {
+    const double c = top.centre_height(xy, R, primary);
+    return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
+  };
+  tp = lines_to_toolpath(std::move(lines), p, kInf, std::move(tp), cl_at);
+  if (tp.empty()) return Status{Error::kEmptyResult, "scan finishing: no CL points"};
+  return tp;
+}
+
+Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
+                               const ScanParams& params, const RoughingParams& rough,
+                               const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  SWARF_RETURN_IF_ERROR(validate(rough));
+  ScanParams p = params;
+  p.stepover_mm = rough.stepover_mm;
+  if (rough.sampling_mm > 0.0) p.sampling_mm = rough.sampling_mm;
+  const double stock_top =
+      std::isfinite(rough.stock_top_mm) ? rough.stock_top_mm : model.bounds.max.z;
+  Toolpath tp = new_toolpath(tool, "tri-slice scan roughing",
+                             clearance_of(p.clearance_z_mm, model, stock_top));
+  const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
+  const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
+  const int stride =
+      std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
+  TriSliceTop coarse;
+  if (stride > 1) coarse = TriSliceTop::build(model, 0.5, stride);
+  const TriSliceTop& use = stride > 1 ? coarse : top;
+  // Table 1: successive inflations, the deepest layer last.
+  for (int k = rough.layers - 1; k >= 0; --k) {
+    const double extra = rough.margin_mm + k * rough.stepdown_mm;
+    auto lines = scan_cl_lines(use, model.bounds, tool.radius(), extra, p, ctx);
+    if (!lines.ok()) return lines.status();
+    const double R = tool.radius() + extra;
+    auto cl_at = [&](Vec2 xy) {
+      const double c = use.centre_height(xy, R, primary);
+      return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
+    };
+    tp = lines_to_toolpath(std::move(lines).value(), p, stock_top, std::move(tp), cl_at);
+  }
+  if (tp.empty())
+    return Status{Error::kEmptyResult, "scan roughing: every layer lies above the stock top " +
+                                           std::to_string(stock_top) + " mm"};
+  return tp;
+}
+
+PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
+                            const ConvolutionOptions& options) {
+  // Ball centre at tip + r. Below the centre the ball meets slice j in a disc of radius
+  // sqrt(r^2 - dz^2) (Eq. (1)); above it the shank is a cylinder of radius r, so every slice
+  // higher than the centre counts at full radius: no undercut is ever entered from above.
+  const double zc = tip_z + r_mm;
+  OffsetOptions oo;
+  oo.arc_tolerance_mm = options.arc_tolerance_mm;
+  std::vector<PolygonSet> parts, above;
+  for (std::size_t j = 0; j < xy.size(); ++j) {
+    if (xy.slices[j].empty()) continue;
+    const double dz = zc - xy.level(j);
+    if (dz > r_mm) continue;
+    if (dz > 0.0)
+      parts.push_back(offset(xy.slices[j], std::sqrt(r_mm * r_mm - dz * dz), oo));
+    else
+      above.push_back(xy.slices[j]);
+  }
+  if (!above.empty()) parts.push_back(offset(unite(std::span<const PolygonSet>(above)), r_mm, oo));
+  return unite(std::span<const PolygonSet>(parts));
+}
+
+Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool, const ContourParams& p,
+                               const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  SWARF_RETURN_IF_ERROR(validate(p));
+  const SliceFamily& xy = model.family(Axis::kZ);
+  const double top_z = std::isfinite(p.top_z_mm) ? p.top_z_mm : model.bounds.max.z - p.stepdown_mm;
+  const double bottom_z = std::isfinite(p.bottom_z_mm) ? p.bottom_z_mm : model.bounds.min.z;
+  std::vector<double> levels;
+  for (double z = top_z; z >= bottom_z - 1e-9; z -= p.stepdown_mm)
+    levels.push_back(z);
+  if (levels.empty())
+    return Status{Error::kEmptyResult, "contour: no level between top and bottom"};
+  const double R = tool.radius() + p.stock_to_leave_mm;
+  ConvolutionOptions co;
+  co.arc_tolerance_mm = p.arc_tolerance_mm;
+  std::vector<std::vector<Ring>> rings(levels.size());
+  parallel_for(levels.size(), ctx.threads, [&](std::size_t i) {
+    if (ctx.cancelled()) return;
+    // The tool centre is at tip + r; with stock to leave it keeps r + stock from the part.
+    const PolygonSet region = waterline_region(xy, levels[i] + tool.radius() - R, R, co);
+    OffsetOptions oo;
+    oo.arc_tolerance_mm = p.arc_tolerance_mm;
+    for (int k = p.radial_passes - 1; k >= 0; --k) {
+      const PolygonSet ring_set = k == 0 ? region : offset(region, k * p.radial_step_mm, oo);
+      for (const Ring& r : ring_set.rings)
+        rings[i].push_back(r);
+    }
+  });
+  if (ctx.cancelled()) return Status{Error::kCancelled, "contour: cancelled"};
+  Toolpath tp =
+      new_toolpath(tool, "tri-slice contour", clearance_of(p.clearance_z_mm, model, -kInf));
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    for (const Ring& r : rings[i]) {
+      if (r.size() < 3) continue;
+      tp.rapid_to({r.front().x, r.front().y, tp.clearance_z_mm});
+      tp.plunge_to(levels[i], p.plunge_feed_mm_min);
+      for (std::size_t k = 1; k <= r.size(); ++k) {
+        const Vec2 q = r[k % r.size()];
+        tp.feed_to({q.x, q.y, levels[i]}, p.feed_mm_min);
+      }
+      tp.retract();
+    }
+  }
+  if (tp.empty()) return Status{Error::kEmptyResult, "contour: no ring at any level"};
+  return tp;
+}
+
+}  // namespace swarf

@@ -1,0 +1,150 @@
+// Tri-slice model, Eq. (1) offsets and the point-wise top envelope (seed 001 section 2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "swarf/mesh/generate.h"
+#include "swarf/trislice/envelope.h"
+#include "swarf/trislice/model.h"
+#include "swarf/trislice/offset.h"
+
+namespace swarf {
+namespace {
+
+// Highest z of a polygon set in a y-family slice ((u, v) = (z, x)) over the vertical line x.
+double top_at(const PolygonSet& set, double x) {
+  double best = -std::numeric_limits<double>::infinity();
+  for (const Ring& ring : set.rings)
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+      if ((a.y <= x) == (b.y <= x)) continue;
+      best = std::max(best, a.x + (x - a.y) / (b.y - a.y) * (b.x - a.x));
+    }
+  return best;
+}
+
+TEST(TriSliceModel, BoxSlicesHaveTheBoxCrossSections) {
+  const Box3 box{{-5, -4, -3}, {5, 4, 3}};
+  auto model = build_trislice(make_box(box), 0.5);
+  ASSERT_TRUE(model.ok()) << model.status().to_string();
+  const double expect[3] = {8.0 * 6.0, 6.0 * 10.0, 10.0 * 8.0};
+  for (int a = 0; a < 3; ++a) {
+    const SliceFamily& f = model->families[static_cast<std::size_t>(a)];
+    EXPECT_NEAR(std::fmod(f.first_level / 0.5, 1.0), 0.0, 1e-9);  // on the lattice k * pitch
+    int full = 0;
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      const double lv = f.level(j);
+      if (lv > box.min[a] + 1e-9 && lv < box.max[a] - 1e-9) {
+        EXPECT_NEAR(area(f.slices[j]), expect[a], 1e-6) << a << " " << lv;
+        ++full;
+      }
+    }
+    EXPECT_GT(full, 10);
+  }
+  // The stock block is exact and on the same lattice.
+  const TriSliceModel block = trislice_block(box, 0.5);
+  for (int a = 0; a < 3; ++a)
+    for (const PolygonSet& s : block.families[static_cast<std::size_t>(a)].slices)
+      EXPECT_NEAR(area(s), expect[a], 1e-9);
+  EXPECT_FALSE(build_trislice(make_box(box), 0.0).ok());
+}
+
+TEST(TriSliceModel, IndependentOfThreadCount) {
+  const Mesh torus = make_torus({0, 0, 0}, 10, 4, 48, 24);
+  Context one, many;
+  one.threads = 1;
+  many.threads = 3;
+  auto a = build_trislice(torus, 0.5, {}, one);
+  auto b = build_trislice(torus, 0.5, {}, many);
+  ASSERT_TRUE(a.ok() && b.ok());
+  for (int f = 0; f < 3; ++f) {
+    const auto& fa = a->families[static_cast<std::size_t>(f)];
+    const auto& fb = b->families[static_cast<std::size_t>(f)];
+    ASSERT_EQ(fa.size(), fb.size());
+    for (std::size_t j = 0; j < fa.size(); ++j)
+      ASSERT_EQ(fa.slices[j].rings, fb.slices[j].rings);
+  }
+}
+
+TEST(ConvolutionalOffset, BoxInflationMatchesTheRoundedBox) {
+  // Faces on the lattice: Eq. (1) is exact here up to the arc tolerance.
+  const Box3 box{{-5, -4, -3}, {5, 4, 3}};
+  auto model = build_trislice(make_box(box), 0.25);
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fy = model->family(Axis::kY);
+  const double r = 2.0;
+  // Inside the box (y = 0): the zx rectangle 6 x 10 rounded by r.
+  const PolygonSet mid = convolve_slice(fy, 0, r);
+  EXPECT_NEAR(area(mid), (10 + 2 * r) * (6 + 2 * r) - (4 - kPi) * r * r, 0.05);
+  // Beyond the face y = 4 by d = 1: the face offset by sqrt(r^2 - d^2).
+  const double rho = std::sqrt(r * r - 1.0);
+  const PolygonSet out = convolve_slice(fy, 20, r);  // level 20 * 0.25 = 5
+  EXPECT_NEAR(area(out), (10 + 2 * rho) * (6 + 2 * rho) - (4 - kPi) * rho * rho, 0.05);
+  EXPECT_TRUE(convolve_slice(fy, 25, r).empty());  // y = 6.25: beyond r of the box
+  // Shrinking: the box shrunk by 1 at y = 2.5 is the 8 x 4 rectangle; at y = 3.5 the ball
+  // no longer fits (the face is 0.5 away).
+  EXPECT_NEAR(area(convolve_slice(fy, 10, -1.0)), 8.0 * 4.0, 0.02);
+  EXPECT_TRUE(convolve_slice(fy, 14, -1.0).empty());
+  // Whole family: inflation adds ceil(r / ds) slices at each end; the closing of a convex
+  // solid is the solid itself.
+  auto inflated = offset_family(fy, r);
+  ASSERT_TRUE(inflated.ok());
+  EXPECT_EQ(inflated->size(), fy.size() + 16);
+  const PolygonSet closed = convolve_slice(*inflated, 0, -r);
+  EXPECT_NEAR(area(closed), 60.0, 0.05);
+}
+
+TEST(ConvolutionalOffset, SphereInflationWithinTheStatedBound) {
+  const double Rs = 10.0, r = 3.0, ds = 0.25;
+  const int seg = 128;
+  auto model = build_trislice(make_sphere({0, 0, 0}, Rs, seg), ds);
+  ASSERT_TRUE(model.ok());
+  // Facets lie inside the sphere by at most the sagitta of a cell's diagonal.
+  const double sag = Rs * (1.0 - std::cos(kPi / seg * std::sqrt(2.0)));
+  const double eq1 = ds * ds / (8.0 * r);  // offset.h, transversal surface (here theta ~ 90 deg)
+  for (long k : {0L, 8L, 20L, 36L}) {
+    const double y = k * ds;
+    const double expect = std::sqrt((Rs + r) * (Rs + r) - y * y);
+    const double got = std::sqrt(area(convolve_slice(model->family(Axis::kY), k, r)) / kPi);
+    EXPECT_LE(got, expect + 0.002) << y;  // never beyond the exact offset (+ arc tolerance)
+    EXPECT_GE(got, expect - (sag + eq1) * (Rs + r) / expect - 0.002) << y;
+  }
+}
+
+TEST(ConvolutionalOffset, EnvelopeEqualsTheTopOfTheInflatedSlice) {
+  // The point-wise envelope (envelope.h) is Eq. (1) restricted to the vertical line: compare
+  // it with the top of the polygon that Eq. (1) builds.
+  const Mesh torus = make_torus({0, 0, 2}, 10, 4, 64, 32);
+  auto model = build_trislice(torus, 0.25);
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fy = model->family(Axis::kY);
+  const SliceEnvelope env = SliceEnvelope::build(fy);
+  const double r = 3.0;
+  for (long k : {-40L, -22L, 0L, 13L, 50L}) {
+    const PolygonSet inflated = convolve_slice(fy, k, r);
+    ASSERT_FALSE(inflated.empty());
+    for (double x = -16.9; x <= 17.0; x += 0.7) {
+      const double poly = top_at(inflated, x);
+      const double point = env.centre_height({x, k * 0.25}, r, -1e9);
+      if (!std::isfinite(poly)) {
+        EXPECT_EQ(point, -1e9) << x;
+        continue;
+      }
+      // Clipper's round joins lie inside the true arcs by up to the arc tolerance (0.001 mm),
+      // measured normal to the boundary: vertically 0.001 * sqrt(1 + slope^2). Where two
+      // nearly parallel arcs of neighbour slices cross, the crossing of their chords moves
+      // further (by tol / sin(half the crossing angle)): allow 2.5 times. The envelope is the
+      // exact value the polygon approximates, never below it.
+      const double h = 1e-3;
+      const double slope = (env.centre_height({x + h, k * 0.25}, r, -1e9) -
+                            env.centre_height({x - h, k * 0.25}, r, -1e9)) /
+                           (2 * h);
+      EXPECT_GE(point, poly - 2e-5) << "y " << k * 0.25 << " x " << x;
+      EXPECT_LE(point - poly, 2.5 * 0.0011 * std::sqrt(1 + slope * slope) + 1e-5)
+          << "y " << k * 0.25 << " x " << x;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swarf
