@@ -7,8 +7,12 @@ shopt -s nullglob
 cd "$(dirname "$0")/.."
 seconds="${1:-10}"
 cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$(nproc)" >/dev/null
 mkdir -p build/fuzz/crashes
+if ! cmake --build --preset fuzz -j "$(nproc)" >build/fuzz/build.log 2>&1; then
+  echo "fuzz: the fuzz build failed:" >&2
+  grep -E "error|undefined" build/fuzz/build.log | head -n 40 >&2
+  exit 1
+fi
 status=0
 for bin in build/fuzz/fuzz/*_fuzz; do
   name=$(basename "$bin" _fuzz)
