@@ -41,14 +41,22 @@ Status load_job(const std::string& job_path, const JobOptions& options, const Op
                 OperationInput& input, OutputSpec& out) {
   Result<std::string> text = read_file(job_path);
   if (!text.ok()) return text.status();
+  return parse_job(*text, job_path, options, op, input, out);
+}
+
+Status parse_job(std::string_view text, const std::string& job_path, const JobOptions& options,
+                 const Operation*& op, OperationInput& input, OutputSpec& out) {
   json job;
   try {
-    job = json::parse(*text);
+    job = json::parse(text);
+  } catch (const json::out_of_range& e) {
+    // A number too large for a double ("1E999") is not a syntax error but is as bad.
+    return bad_input(job_path + ": " + e.what());
   } catch (const json::parse_error& e) {
     // Name the line and column where the syntax breaks.
     std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text->size(); ++i) {
-      if ((*text)[i] == '\n') {
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') {
         ++line;
         column = 1;
       } else {
@@ -135,8 +143,10 @@ Status load_job(const std::string& job_path, const JobOptions& options, const Op
     out.gcode_options.dialect = *d;
   }
   if (outputs.contains("program_number")) {
-    if (!outputs["program_number"].is_number_integer())
-      return bad_input(job_path + ": outputs.program_number must be a whole number");
+    if (!outputs["program_number"].is_number_integer() ||
+        outputs["program_number"].get<long long>() < 1 ||
+        outputs["program_number"].get<long long>() > 9999)
+      return bad_input(job_path + ": outputs.program_number must be a whole number 1 to 9999");
     out.gcode_options.program_number = outputs["program_number"].get<int>();
   }
   if (outputs.contains("line_numbers")) {

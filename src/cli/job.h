@@ -27,5 +27,8 @@ struct JobOptions {
 /// Parses and validates a job; on success fills `op`, `input` and `out`.
 Status load_job(const std::string& job_path, const JobOptions& options, const Operation*& op,
                 OperationInput& input, OutputSpec& out);
+/// Same, from the job's text; `job_path` names it in messages and anchors relative paths.
+Status parse_job(std::string_view text, const std::string& job_path, const JobOptions& options,
+                 const Operation*& op, OperationInput& input, OutputSpec& out);
 
 }  // namespace swarf::cli

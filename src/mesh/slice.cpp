@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "polygon/polygon_detail.h"
 #include "swarf/core/parallel.h"
 
 namespace swarf {
@@ -78,6 +79,12 @@ class Slicer {
     std::uint32_t from;  ///< edge id where the segment starts
     std::uint32_t to;    ///< edge id where it ends
   };
+  /// A triangle in a bucket with its corner coordinates along the axis, copied so that the
+  /// scan over a bucket reads memory in order instead of chasing vertex indices.
+  struct Entry {
+    double c[3];
+    std::uint32_t tri;
+  };
 
   void build_edges();
   void build_buckets();
@@ -88,9 +95,9 @@ class Slicer {
   Axis plane_;
   std::vector<std::array<std::uint32_t, 3>> tri_edges_;  ///< edge id of corner k -> k+1
   std::vector<std::array<std::uint32_t, 2>> edge_ends_;  ///< vertex indices, lower first
-  std::vector<double> tri_min_, tri_max_;
-  double lo_ = 0.0, width_ = 1.0;
-  std::vector<std::uint32_t> bucket_start_, bucket_tris_;
+  double lo_ = 0.0, hi_ = 0.0, width_ = 1.0;             ///< axis range of the mesh, bucket width
+  std::vector<std::uint32_t> bucket_start_;
+  std::vector<Entry> bucket_entries_;
 };
 
 void Slicer::build_edges() {
@@ -118,17 +125,16 @@ void Slicer::build_edges() {
 
 void Slicer::build_buckets() {
   const std::size_t n = mesh_.size();
-  tri_min_.resize(n);
-  tri_max_.resize(n);
+  std::vector<double> tri_min(n), tri_max(n);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, extent_sum = 0.0;
   for (std::size_t t = 0; t < n; ++t) {
     const double a = mesh_.corner(t, 0)[axis_], b = mesh_.corner(t, 1)[axis_],
                  c = mesh_.corner(t, 2)[axis_];
-    tri_min_[t] = std::min({a, b, c});
-    tri_max_[t] = std::max({a, b, c});
-    lo = std::min(lo, tri_min_[t]);
-    hi = std::max(hi, tri_max_[t]);
-    extent_sum += tri_max_[t] - tri_min_[t];
+    tri_min[t] = std::min({a, b, c});
+    tri_max[t] = std::max({a, b, c});
+    lo = std::min(lo, tri_min[t]);
+    hi = std::max(hi, tri_max[t]);
+    extent_sum += tri_max[t] - tri_min[t];
   }
   if (n == 0 || !(hi > lo)) {  // empty or flat mesh: no level cuts it
     bucket_start_ = {0, 0};
@@ -137,6 +143,7 @@ void Slicer::build_buckets() {
     return;
   }
   lo_ = lo;
+  hi_ = hi;
   // Buckets about as wide as a typical triangle is tall: a level then visits roughly twice
   // the triangles it cuts, and each triangle sits in about two buckets. Widen when tall
   // triangles would make the table large.
@@ -147,27 +154,29 @@ void Slicer::build_buckets() {
     buckets = static_cast<std::size_t>(range / width_) + 1;
     entries = 0;
     for (std::size_t t = 0; t < n; ++t)
-      entries += static_cast<std::size_t>((tri_max_[t] - lo) / width_) -
-                 static_cast<std::size_t>((tri_min_[t] - lo) / width_) + 1;
+      entries += static_cast<std::size_t>((tri_max[t] - lo) / width_) -
+                 static_cast<std::size_t>((tri_min[t] - lo) / width_) + 1;
     if (entries <= 8 * n + buckets || buckets <= 1) break;
     width_ *= 2.0;
   }
   bucket_start_.assign(buckets + 1, 0);
   for (std::size_t t = 0; t < n; ++t) {
-    const auto b0 = static_cast<std::size_t>((tri_min_[t] - lo) / width_);
-    const auto b1 = static_cast<std::size_t>((tri_max_[t] - lo) / width_);
+    const auto b0 = static_cast<std::size_t>((tri_min[t] - lo) / width_);
+    const auto b1 = static_cast<std::size_t>((tri_max[t] - lo) / width_);
     for (std::size_t b = b0; b <= b1; ++b)
       ++bucket_start_[b + 1];
   }
   for (std::size_t b = 0; b < buckets; ++b)
     bucket_start_[b + 1] += bucket_start_[b];
-  bucket_tris_.resize(entries);
+  bucket_entries_.resize(entries);
   std::vector<std::uint32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
   for (std::size_t t = 0; t < n; ++t) {  // ascending triangle order within each bucket
-    const auto b0 = static_cast<std::size_t>((tri_min_[t] - lo) / width_);
-    const auto b1 = static_cast<std::size_t>((tri_max_[t] - lo) / width_);
+    const auto b0 = static_cast<std::size_t>((tri_min[t] - lo) / width_);
+    const auto b1 = static_cast<std::size_t>((tri_max[t] - lo) / width_);
+    const Entry e{{mesh_.corner(t, 0)[axis_], mesh_.corner(t, 1)[axis_], mesh_.corner(t, 2)[axis_]},
+                  static_cast<std::uint32_t>(t)};
     for (std::size_t b = b0; b <= b1; ++b)
-      bucket_tris_[fill[b]++] = static_cast<std::uint32_t>(t);
+      bucket_entries_[fill[b]++] = e;
   }
 }
 
@@ -183,19 +192,22 @@ Vec2 Slicer::edge_point(std::uint32_t edge, double level) const {
 }
 
 PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
-  if (!std::isfinite(level) || bucket_start_.size() < 2 || level <= lo_) return {};
+  // A triangle is cut when min < level <= max, so nothing is cut outside (lo, hi]; checking
+  // that first also keeps the bucket index below from overflowing.
+  if (!std::isfinite(level) || bucket_start_.size() < 2 || level <= lo_ || level > hi_) return {};
   const auto bucket = static_cast<std::size_t>((level - lo_) / width_);
   if (bucket + 1 >= bucket_start_.size()) return {};
 
   // 1. One directed segment per cut triangle, from edge to edge.
   std::vector<Segment> segs;
   for (std::uint32_t i = bucket_start_[bucket]; i < bucket_start_[bucket + 1]; ++i) {
-    const std::uint32_t t = bucket_tris_[i];
-    if (!(tri_min_[t] < level && level <= tri_max_[t])) continue;
+    const Entry& e = bucket_entries_[i];
     bool above[3];
     int count = 0;
     for (int k = 0; k < 3; ++k)
-      count += (above[k] = mesh_.corner(t, k)[axis_] >= level) ? 1 : 0;
+      count += (above[k] = e.c[k] >= level) ? 1 : 0;
+    if (count == 0 || count == 3) continue;
+    const std::uint32_t t = e.tri;
     const bool lonely_above = count == 1;
     int i0 = 0;
     while (above[i0] != lonely_above)
@@ -294,7 +306,9 @@ PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
     }
     raw.rings.push_back(std::move(ring));
   }
-  return normalized(raw, FillRule::kNonZero);
+  // Sections of a clean closed mesh are valid already; the fast path checks that exactly and
+  // only runs the Clipper union when they are not.
+  return detail::normalized_nonzero_fast(raw);
 }
 
 }  // namespace

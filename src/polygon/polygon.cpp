@@ -4,10 +4,13 @@
 // (outers CCW, holes CW) before it leaves this file.
 #include "swarf/polygon/polygon.h"
 
+#include "polygon/polygon_detail.h"
+
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace swarf {
@@ -127,7 +130,148 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return distance(p, a + ab * t);
 }
 
+// --- validity check for the fast normalization ---------------------------------------------
+
+// Exact orientation sign of (b - a) x (c - a); coordinates are limited to +-2^29 grid units
+// by the caller, so the products fit in 64 bits.
+int orient(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+  const cl::cInt v = (b.X - a.X) * (c.Y - a.Y) - (b.Y - a.Y) * (c.X - a.X);
+  return (v > 0) - (v < 0);
+}
+bool on_segment(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& p) {
+  return std::min(a.X, b.X) <= p.X && p.X <= std::max(a.X, b.X) && std::min(a.Y, b.Y) <= p.Y &&
+         p.Y <= std::max(a.Y, b.Y);
+}
+// True when the closed segments ab and cd share any point.
+bool segments_touch(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c,
+                    const cl::IntPoint& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {
+    if (o1 != 0 || o2 != 0) return true;
+  }
+  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) ||
+         (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
+}
+
+// True when every ring is simple and no two rings touch: every pair of edges whose y ranges
+// overlap is tested exactly; edges adjacent in a ring may only share their common vertex.
+bool simple_and_disjoint(const cl::Paths& paths) {
+  struct Edge {
+    cl::cInt ymin, ymax, xmin, xmax;
+    std::uint32_t ring, index;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    const cl::Path& p = paths[r];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const cl::IntPoint &a = p[i], &b = p[(i + 1) % p.size()];
+      edges.push_back({std::min(a.Y, b.Y), std::max(a.Y, b.Y), std::min(a.X, b.X),
+                       std::max(a.X, b.X), static_cast<std::uint32_t>(r),
+                       static_cast<std::uint32_t>(i)});
+    }
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+    return a.ymin != b.ymin ? a.ymin < b.ymin : a.xmin < b.xmin;
+  });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Edge& e = edges[i];
+    const cl::Path& pe = paths[e.ring];
+    const cl::IntPoint &a = pe[e.index], &b = pe[(e.index + 1) % pe.size()];
+    for (std::size_t j = i + 1; j < edges.size() && edges[j].ymin <= e.ymax; ++j) {
+      const Edge& f = edges[j];
+      if (f.xmin > e.xmax || f.xmax < e.xmin) continue;
+      const cl::Path& pf = paths[f.ring];
+      const cl::IntPoint &c = pf[f.index], &d = pf[(f.index + 1) % pf.size()];
+      if (e.ring == f.ring) {
+        const std::size_t n = pe.size();
+        const bool f_follows = (e.index + 1) % n == f.index,
+                   e_follows = (f.index + 1) % n == e.index;
+        if (f_follows || e_follows) {
+          // Adjacent: they share one vertex; they must not fold back over each other.
+          const cl::IntPoint& o = f_follows ? a : c;  // start of the first edge
+          const cl::IntPoint& m = f_follows ? b : a;  // shared vertex
+          const cl::IntPoint& q = f_follows ? d : b;  // end of the second edge
+          if (n < 3 ||
+              (orient(o, m, q) == 0 && (m.X - o.X) * (q.X - m.X) + (m.Y - o.Y) * (q.Y - m.Y) < 0))
+            return false;
+          if (f_follows && e_follows) return false;  // a two-point ring
+          continue;
+        }
+      }
+      if (segments_touch(a, b, c, d)) return false;
+    }
+  }
+  return true;
+}
+
+// Winding number of ring `path` around p (p not on it).
+int winding(const cl::Path& path, const cl::IntPoint& p) {
+  int w = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const cl::IntPoint &a = path[i], &b = path[(i + 1) % path.size()];
+    if (a.Y <= p.Y) {
+      if (b.Y > p.Y && orient(a, b, p) > 0) ++w;
+    } else if (b.Y <= p.Y && orient(a, b, p) < 0) {
+      --w;
+    }
+  }
+  return w;
+}
+
+// For simple, disjoint rings: true when each counter-clockwise ring has winding 0 from the
+// other rings and each clockwise ring winding 1, so that under the non-zero rule every ring
+// separates filled (winding 1) from empty (winding 0) and the set is already normalized.
+bool oriented_as_normalized(const cl::Paths& paths) {
+  std::vector<cl::IntRect> boxes(paths.size());
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    cl::IntRect b{paths[r][0].X, paths[r][0].Y, paths[r][0].X, paths[r][0].Y};
+    for (const cl::IntPoint& q : paths[r]) {
+      b.left = std::min(b.left, q.X);
+      b.right = std::max(b.right, q.X);
+      b.top = std::min(b.top, q.Y);
+      b.bottom = std::max(b.bottom, q.Y);
+    }
+    boxes[r] = b;
+  }
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    const cl::IntPoint p = paths[r][0];
+    int w = 0;
+    for (std::size_t s = 0; s < paths.size(); ++s) {
+      if (s == r) continue;
+      const cl::IntRect& b = boxes[s];
+      if (p.X < b.left || p.X > b.right || p.Y < b.top || p.Y > b.bottom) continue;
+      w += winding(paths[s], p);
+    }
+    if (w != (cl::Area(paths[r]) > 0 ? 0 : 1)) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+namespace detail {
+
+PolygonSet normalized_nonzero_fast(const PolygonSet& set) {
+  constexpr cl::cInt kLimit = cl::cInt{1} << 29;  // keeps orient() within 64 bits
+  cl::Paths paths = to_paths(set);
+  cl::CleanPolygons(paths, kCleanDistance);
+  // A ring that collapsed (or a figure eight of zero total area) needs the union.
+  bool plain = true;
+  for (const cl::Path& p : paths) {
+    plain &= p.size() >= 3 && cl::Area(p) != 0.0;
+    for (const cl::IntPoint& q : p)
+      plain &= q.X > -kLimit && q.X < kLimit && q.Y > -kLimit && q.Y < kLimit;
+  }
+  if (plain && simple_and_disjoint(paths) && oriented_as_normalized(paths)) {
+    PolygonSet out;
+    out.rings.reserve(paths.size());
+    for (const cl::Path& p : paths) out.rings.push_back(to_ring(p));
+    return out;
+  }
+  return normalized(set, FillRule::kNonZero);
+}
+
+}  // namespace detail
 
 PolygonSet normalized(const PolygonSet& set, FillRule rule) {
   cl::Clipper c;

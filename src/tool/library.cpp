@@ -1,5 +1,6 @@
 #include "swarf/tool/library.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -65,7 +66,9 @@ Result<ToolLibrary> parse_tool_library(std::string_view text, std::string_view s
     SWARF_RETURN_IF_ERROR(get_number(jt, "number", number, where, true));
     SWARF_RETURN_IF_ERROR(get_number(jt, "helix_angle", t.helix_angle_deg, where, false));
     SWARF_RETURN_IF_ERROR(get_number(jt, "flute_length", t.flute_length_mm, where, false));
-    if (flutes != static_cast<int>(flutes) || number != static_cast<int>(number))
+    // Range first: casting an out-of-range double to int is undefined behaviour.
+    if (std::abs(flutes) > 1e6 || std::abs(number) > 1e6 || flutes != std::floor(flutes) ||
+        number != std::floor(number))
       return bad_input(where + ": \"flutes\" and \"number\" must be whole numbers");
     t.flutes = static_cast<int>(flutes);
     t.number = static_cast<int>(number);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "swarf/gcode/gcode.h"
+#include "swarf/toolpath/metrics.h"
 
 namespace swarf {
 namespace {
@@ -114,10 +115,10 @@ TEST(GcodeReader, RadiusFormatBothSigns) {
 TEST(GcodeReader, OtherPlanesAndAbsoluteCentres) {
   const Toolpath p = parse_ok(
       "G0 X10 Y0 Z0\n"
-      "G18 G2 X0 Z10 I-10 K0 F100\n"  // ZX plane, centre at the origin
-      "G19 G3 Y5 Z15 J0 K5\n"         // YZ plane, centre (y 0, z 15)
+      "G18 G2 X0 Z10 I-10 K0 F100\n"   // ZX plane, centre at the origin
+      "G19 G3 Y5 Z15 J0 K5\n"          // YZ plane, centre (y 0, z 15)
       "G17 G90.1 G3 X-10 Y5 I-5 J5\n"  // absolute centre (-5, 5)
-      "G91.1 G2 X0 Y15 I0 J10\n");    // incremental again: centre (-10, 15)
+      "G91.1 G2 X0 Y15 I0 J10\n");     // incremental again: centre (-10, 15)
   ASSERT_EQ(p.moves.size(), 5u);
   EXPECT_EQ(p.moves[1].plane, ArcPlane::kZX);
   EXPECT_NEAR(p.moves[1].center.x, 0.0, 1e-12);
@@ -173,6 +174,23 @@ TEST(GcodeReader, StartPositionAndMissingFile) {
   ASSERT_FALSE(missing.ok());
   EXPECT_EQ(missing.status().code(), Error::kIo);
   EXPECT_NE(missing.status().message().find("/nonexistent/x.nc"), std::string::npos);
+}
+
+TEST(GcodeReader, HandWrittenFileGivesHandComputedMetrics) {
+  const auto r = read_gcode(SWARF_TEST_DATA_DIR "/gcode/rounded_rectangle.ngc");
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  EXPECT_EQ(r->tool_number, 2);
+  EXPECT_EQ(r->spindle_rpm, 18000.0);
+  EXPECT_EQ(r->coolant, Coolant::kMist);
+  EXPECT_EQ(r->clearance_z_mm, 5.0);
+  const ToolpathMetrics m = compute_metrics(*r);
+  const double contour = 2.0 * (16.0 + 6.0) + 4.0 * kPi;
+  EXPECT_NEAR(m.cutting_length_mm, contour + 6.0, 1e-9);  // plunge from Z5 to Z-1
+  EXPECT_NEAR(
+      m.machining_time_s,
+      6.0 / 200.0 * 60.0 + contour / 600.0 * 60.0 + (std::hypot(2.0, 0.0) + 6.0) / 5000.0 * 60.0,
+      1e-9);
+  EXPECT_EQ(m.lift_offs, 0u);
 }
 
 }  // namespace

@@ -191,6 +191,29 @@ TEST(GcodeWriter, LineNumbersOnBlocksOnly) {
   }
 }
 
+TEST(GcodeWriter, SliverArcNeverBecomesAFullCircle) {
+  // An arc whose start and end round to the same coordinates would read as 360 degrees.
+  Toolpath p;
+  p.rapid_to({10.0, 0.0, 0.0});
+  const double a = 1e-6;  // radians: a 10 nm chord
+  p.arc_to({10.0 * std::cos(a), 10.0 * std::sin(a), 0.0}, {0.0, 0.0}, false, 500.0);
+  for (Dialect d : kAllDialects) {
+    GcodeOptions o;
+    o.dialect = d;
+    const auto read = parse_gcode(write_gcode(p, o), "sliver.nc");
+    ASSERT_TRUE(read.ok()) << read.status().message();
+    Vec3 pos;
+    double length = 0.0;
+    for (std::size_t i = 0; i < read->moves.size(); ++i) {
+      if (i > 0 && read->moves[i].kind != MoveKind::kRapid) {
+        length += move_length(pos, read->moves[i]);
+      }
+      pos = read->moves[i].end;
+    }
+    EXPECT_LT(length, 1e-3);
+  }
+}
+
 TEST(GcodeWriter, Deterministic) {
   for (Dialect d : kAllDialects)
     EXPECT_EQ(write(d, true), write(d, true));

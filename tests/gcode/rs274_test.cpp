@@ -214,5 +214,13 @@ TEST_F(Rs274, ReaderSemanticsMatchLinuxCnc) {
       "reader.ngc");
 }
 
+TEST_F(Rs274, HandWrittenDataFileMatchesLinuxCnc) {
+  std::ifstream in(SWARF_TEST_DATA_DIR "/gcode/rounded_rectangle.ngc");
+  std::stringstream text;
+  text << in.rdbuf();
+  ASSERT_FALSE(text.str().empty());
+  expect_accepted_and_same_motion(text.str(), "rounded_rectangle.ngc");
+}
+
 }  // namespace
 }  // namespace swarf

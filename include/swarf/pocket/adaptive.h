@@ -1,0 +1,135 @@
+// Adaptive pocketing (seed 000, Chakraborty, Panda, Umap 2024): a simulation-driven
+// curvilinear toolpath with near-constant tool engagement, computed on a CPU pixel stock.
+// The tool is moved in small equal steps; each step goes in the direction, within a
+// maximum deviation from the last one, whose engagement (material pixels removed) is
+// closest to the target (Algorithms 1-3), follows the boundary where no cutting move
+// exists (Algorithms 4-5), and the raw path is post-processed (Algorithms 6-8), smoothed,
+// linked and re-simulated.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "swarf/core/context.h"
+#include "swarf/core/status.h"
+#include "swarf/pocket/pocket_input.h"
+#include "swarf/tool/tool.h"
+#include "swarf/toolpath/toolpath.h"
+
+namespace swarf {
+
+/// Parameters in machinist terms. Zero means "choose automatically" where noted; every
+/// value is checked by validate(AdaptiveParams) in one place.
+struct AdaptiveParams {
+  /// Target radial engagement: give the angle, or the radial stepover (the angle is then
+  /// acos(1 - stepover / R)). Both 0: stepover 10 % of the tool diameter.
+  double engagement_deg = 0.0;
+  double stepover_mm = 0.0;
+  /// Band around the target engagement accepted without searching further (seed 000
+  /// Algorithm 3's delta_tol), percent of the target.
+  double tolerance_pct = 10.0;
+  /// Length of one path step (seed 000 delta_step), mm; 0 = tool diameter / 20.
+  double step_mm = 0.0;
+  /// Largest change of direction between two steps (seed 000 theta_max, Algorithm 5), deg.
+  double max_deviation_deg = 90.0;
+  /// Pixel size of the simulation, mm; 0 = the rule of section 3.2 (see docs/pocket.md).
+  double resolution_mm = 0.0;
+  /// Climb milling (material on the right of the feed direction, spindle M3).
+  bool climb = true;
+
+  double depth_mm = 6.0;        ///< pocket depth below top_z_mm
+  double stepdown_mm = 0.0;     ///< depth of cut per layer; 0 = the whole depth at once
+  double floor_stock_mm = 0.0;  ///< left on the floor
+  double wall_stock_mm = 0.0;   ///< left on walls and islands
+  double top_z_mm = 0.0;        ///< top of the stock
+  double clearance_z_mm = 5.0;  ///< rapid plane above the stock
+
+  double feed_mm_min = 1000.0;        ///< cutting and linking feed
+  double plunge_feed_mm_min = 300.0;  ///< helix, ramp and plunge feed
+  double rapid_mm_min = 5000.0;       ///< for time estimates (retract or stay down)
+  double ramp_angle_deg = 3.0;        ///< descent angle of helix and ramp entries
+  /// Helix radius (tool centre), mm; 0 = 0.3 x tool diameter, reduced to what fits.
+  double helix_radius_mm = 0.0;
+  /// Plunge points tried along the medial axis; the fastest toolpath wins.
+  int plunge_candidates = 1;
+  int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
+  /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
+  double simplify_tolerance_mm = 0.0;
+};
+
+/// Checks ranges; the message names the parameter and its unit.
+Status validate(const AdaptiveParams& params, const Tool& tool);
+
+enum class StepKind : std::uint8_t { kCut, kBoundary, kLink };
+
+/// One step of the final (re-simulated) 2D path, for the per-step CSV and plots.
+struct AdaptiveStep {
+  Vec2 position;  ///< end of the step, mm
+  StepKind kind = StepKind::kCut;
+  int engagement_px = 0;        ///< material pixels removed by this step
+  double engagement_deg = 0.0;  ///< equivalent engagement angle of that count
+  double deviation_deg = 0.0;   ///< turn from the previous step's direction
+  double length_mm = 0.0;
+};
+
+/// The simulation bitmap after the final path, for the report picture: per pixel 0 =
+/// outside the pocket, 1 = material left, 2 + k = cut by step k.
+struct CutMap {
+  Vec2 origin;
+  double pixel_mm = 0.0;
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint32_t> cells;
+};
+
+struct AdaptiveResult {
+  Toolpath toolpath;
+  std::vector<AdaptiveStep> steps;  ///< one layer's 2D path (all layers repeat it)
+  CutMap cut_map;
+  double resolution_mm = 0.0;
+  double step_mm = 0.0;
+  double target_engagement_deg = 0.0;
+  double target_engagement_px = 0.0;
+  Vec2 plunge_point;
+  double helix_radius_mm = 0.0;  ///< 0 when the entry is a ramp
+  int layers = 0;
+  int retracts_per_layer = 0;
+  int trochoid_groups = 0;
+  int boundary_groups = 0;
+  double material_left_mm2 = 0.0;  ///< reachable material the path leaves, per the simulation
+  double gouge_steps = 0;          ///< steps whose disk touched a forbidden pixel (0 expected)
+};
+
+/// Computes the adaptive pocket toolpath. Errors: kBadParameter, kToolTooLarge (the tool
+/// fits nowhere in the pocket), kNoEntryFound (it fits but cannot helix or ramp in),
+/// kCancelled.
+Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
+                                       const AdaptiveParams& params,
+                                       const Context& ctx = default_context());
+
+/// Engagement angle of a radial stepover on a tool of radius R: acos(1 - stepover / R), deg.
+double engagement_angle_deg(double stepover_mm, double tool_radius_mm);
+/// The inverse: R (1 - cos angle).
+double stepover_for_angle_mm(double engagement_deg, double tool_radius_mm);
+
+/// Summary figures of a result: lengths, time, engagement statistics over cutting steps.
+struct AdaptiveSummary {
+  double cutting_length_mm = 0.0;
+  double air_length_mm = 0.0;
+  double time_s = 0.0;
+  double engagement_mean_deg = 0.0;
+  double engagement_p5_deg = 0.0;
+  double engagement_p95_deg = 0.0;
+  double max_deviation_deg = 0.0;  ///< over cutting steps
+  /// Fraction of the cutting length whose engagement is within +-20 % of the target.
+  double within_20pct = 0.0;
+};
+AdaptiveSummary summarize(const AdaptiveResult& result, const AdaptiveParams& params);
+/// "cutting 1234.5 mm, air 56.7 mm, time 83.2 s, engagement mean/p5/p95 36.1/30.2/40.0 deg,
+/// max deviation 12.0 deg"
+std::string summary_line(const AdaptiveSummary& summary);
+/// Per-step CSV: index,x,y,kind,engagement_px,engagement_deg,deviation_deg,length_mm.
+std::string steps_csv(const AdaptiveResult& result);
+
+}  // namespace swarf

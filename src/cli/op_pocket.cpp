@@ -1,0 +1,148 @@
+// `swarf pocket`: the adaptive pocket of seed 000 (swarf/pocket/adaptive.h).
+#include <cmath>
+
+#include "cli/operation.h"
+#include "swarf/pocket/adaptive.h"
+#include "swarf/report/image.h"
+#include "swarf/report/plot.h"
+#include "swarf/toolpath/postprocess.h"
+
+namespace swarf::cli {
+namespace {
+
+using nlohmann::json;
+
+double num(const json& p, const char* key) {
+  return p.at(key).get<double>();
+}
+
+// The cut material coloured by the engagement of the step that removed it (seed 000 Fig. 2
+// right): blue low, red high (2 x target), material left red-brown, walls dark, entry grey.
+Image engagement_picture(const AdaptiveResult& r) {
+  const CutMap& m = r.cut_map;
+  Image img(m.width, m.height, Rgb{40, 40, 40});
+  for (int j = 0; j < m.height; ++j)
+    for (int i = 0; i < m.width; ++i) {
+      const std::uint32_t c = m.cells[static_cast<std::size_t>(j) * m.width + i];
+      Rgb& px = img.at(i, m.height - 1 - j);
+      if (c == 1) {
+        px = Rgb{150, 60, 40};
+      } else if (c == 2) {
+        px = Rgb{200, 200, 200};
+      } else if (c >= 3 && c - 3 < r.steps.size()) {
+        px = heat_color(r.steps[c - 3].engagement_deg / (2.0 * r.target_engagement_deg));
+      }
+    }
+  return img;
+}
+
+std::string engagement_chart(const AdaptiveResult& r) {
+  Series eng{"engagement (deg)", {}, {}, "#1f77b4"};
+  Series dev{"deviation (deg)", {}, {}, "#ff7f0e"};
+  double s = 0.0;
+  for (const AdaptiveStep& st : r.steps) {
+    s += st.length_mm;
+    eng.x.push_back(s);
+    eng.y.push_back(st.engagement_deg);
+    dev.x.push_back(s);
+    dev.y.push_back(st.deviation_deg);
+  }
+  return line_chart_svg({eng, dev}, "Engagement and deviation along the path (seed 000 Fig. 8)",
+                        "path length (mm)", "degrees");
+}
+
+Result<OperationOutput> run(const OperationInput& in) {
+  const json& p = in.params;
+  auto pocket = read_pocket(in.input_path);
+  if (!pocket) return pocket.status();
+  AdaptiveParams ap;
+  if (!p.at("stepover").is_null()) ap.stepover_mm = num(p, "stepover");
+  if (!p.at("engagement").is_null()) ap.engagement_deg = num(p, "engagement");
+  ap.tolerance_pct = num(p, "tolerance");
+  ap.step_mm = num(p, "step");
+  ap.max_deviation_deg = num(p, "max_deviation");
+  ap.resolution_mm = num(p, "resolution");
+  ap.climb = !p.at("conventional").get<bool>();
+  ap.depth_mm = num(p, "depth");
+  ap.stepdown_mm = num(p, "stepdown");
+  ap.floor_stock_mm = num(p, "floor_stock");
+  ap.wall_stock_mm = num(p, "wall_stock");
+  ap.top_z_mm = num(p, "top_z");
+  ap.clearance_z_mm = num(p, "clearance_z");
+  ap.feed_mm_min = num(p, "feed");
+  ap.plunge_feed_mm_min = num(p, "plunge_feed");
+  ap.ramp_angle_deg = num(p, "ramp_angle");
+  ap.helix_radius_mm = num(p, "helix_radius");
+  ap.plunge_candidates = p.at("plunge_candidates").get<int>();
+  ap.smoothing_iterations = p.at("smoothing").get<int>();
+  ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
+  auto r = adaptive_pocket(*pocket, *in.tool, ap, in.ctx ? *in.ctx : default_context());
+  if (!r) return r.status();
+  OperationOutput out;
+  Toolpath tp = r->toolpath;
+  if (p.at("arcs").get<bool>()) tp = fit_arcs(tp);
+  out.toolpaths.push_back(std::move(tp));
+  const AdaptiveSummary s = summarize(*r, ap);
+  out.summary["cutting_length_mm"] = s.cutting_length_mm;
+  out.summary["air_length_mm"] = s.air_length_mm;
+  out.summary["estimated_time_s"] = s.time_s;
+  out.summary["engagement_target_deg"] = r->target_engagement_deg;
+  out.summary["engagement_mean_deg"] = s.engagement_mean_deg;
+  out.summary["engagement_p5_deg"] = s.engagement_p5_deg;
+  out.summary["engagement_p95_deg"] = s.engagement_p95_deg;
+  out.summary["engagement_within_20pct"] = s.within_20pct;
+  out.summary["max_deviation_deg"] = s.max_deviation_deg;
+  out.summary["resolution_mm"] = r->resolution_mm;
+  out.summary["layers"] = r->layers;
+  out.summary["retracts_per_layer"] = r->retracts_per_layer;
+  out.summary["material_left_mm2"] = r->material_left_mm2;
+  out.summary["summary"] = summary_line(s);
+  out.csv_override = steps_csv(*r);
+  out.report_files["steps.csv"] = *out.csv_override;
+  out.report_files["engagement.svg"] = engagement_chart(*r);
+  out.report_files["engagement.png"] = png_bytes(engagement_picture(*r));
+  out.plot_background = pocket->region;
+  return out;
+}
+
+Param number(const char* key, double def, const char* help) {
+  return Param{key, ParamType::kNumber, def, help, false};
+}
+
+const OperationRegistrar kRegistrar(Operation{
+    "pocket",
+    "adaptive (constant-engagement) pocket clearing, seed 000",
+    "pocket outline: .json {outer, islands}, .svg or .dxf (mm)",
+    true,
+    true,
+    {
+        Param{"stepover", ParamType::kNumber, nullptr,
+              "target radial stepover, mm (default 10 % of the tool diameter)", true},
+        Param{"engagement", ParamType::kNumber, nullptr,
+              "target engagement angle instead of --stepover, degrees", true},
+        number("tolerance", 10.0, "engagement band accepted without search, % of target"),
+        number("step", 0.0, "path step length, mm (0 = tool diameter / 20)"),
+        number("max_deviation", 90.0, "largest turn between two steps, degrees"),
+        number("resolution", 0.0, "simulation pixel size, mm (0 = automatic)"),
+        Param{"conventional", ParamType::kBool, false, "conventional instead of climb milling",
+              false},
+        number("depth", 6.0, "pocket depth below the top, mm"),
+        number("stepdown", 0.0, "depth per layer, mm (0 = whole depth)"),
+        number("floor_stock", 0.0, "stock left on the floor, mm"),
+        number("wall_stock", 0.0, "stock left on walls and islands, mm"),
+        number("top_z", 0.0, "top of the stock, mm"),
+        number("clearance_z", 5.0, "rapid plane, mm"),
+        number("feed", 1000.0, "cutting feed, mm/min"),
+        number("plunge_feed", 300.0, "helix and ramp feed, mm/min"),
+        number("ramp_angle", 3.0, "helix and ramp descent angle, degrees"),
+        number("helix_radius", 0.0, "helix radius, mm (0 = 0.3 x diameter, or what fits)"),
+        Param{"plunge_candidates", ParamType::kInteger, 1,
+              "plunge points tried along the medial axis (the fastest path wins)", false},
+        Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
+        number("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),
+        Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},
+    },
+    run});
+
+}  // namespace
+}  // namespace swarf::cli

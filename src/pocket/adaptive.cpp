@@ -1,0 +1,409 @@
+// Driver of the adaptive pocket strategy: parameters, plunge candidates, re-simulation of
+// the final path (seed 000 6.6), layers and the Toolpath, summary figures.
+#include "swarf/pocket/adaptive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "pocket/adaptive_internal.h"
+#include "pocket/distance_transform.h"
+
+namespace swarf {
+
+double engagement_angle_deg(double stepover_mm, double tool_radius_mm) {
+  return rad_to_deg(std::acos(std::clamp(1.0 - stepover_mm / tool_radius_mm, -1.0, 1.0)));
+}
+double stepover_for_angle_mm(double engagement_deg, double tool_radius_mm) {
+  return tool_radius_mm * (1.0 - std::cos(deg_to_rad(engagement_deg)));
+}
+
+Status validate(const AdaptiveParams& p, const Tool& tool) {
+  auto bad = [](const std::string& m) { return bad_parameter(m); };
+  const double d = tool.diameter_mm;
+  if (!(d > 0.0)) return bad("tool diameter must be positive");
+  if (p.engagement_deg < 0.0 || p.engagement_deg > 90.0)
+    return bad("engagement_deg must be in (0, 90] degrees (0 = use stepover_mm)");
+  if (p.stepover_mm < 0.0 || p.stepover_mm > 0.5 * d)
+    return bad("stepover_mm must be in (0, tool radius] (0 = 10 % of the diameter)");
+  if (!(p.tolerance_pct > 0.0 && p.tolerance_pct <= 50.0))
+    return bad("tolerance_pct must be in (0, 50] percent");
+  if (p.step_mm < 0.0 || p.step_mm > 0.5 * d)
+    return bad("step_mm must be in (0, tool radius] mm (0 = diameter / 20)");
+  if (!(p.max_deviation_deg >= 5.0 && p.max_deviation_deg <= 120.0))
+    return bad("max_deviation_deg must be in [5, 120] degrees");
+  if (p.resolution_mm < 0.0 || (p.resolution_mm > 0.0 && p.resolution_mm > 0.1 * d))
+    return bad("resolution_mm must be in (0, diameter / 10] mm (0 = automatic)");
+  if (!(p.depth_mm > 0.0)) return bad("depth_mm must be positive");
+  if (p.stepdown_mm < 0.0) return bad("stepdown_mm must not be negative (0 = full depth)");
+  if (p.stepdown_mm > tool.flute_length_mm ||
+      (p.stepdown_mm == 0.0 && p.depth_mm > tool.flute_length_mm))
+    return bad("stepdown exceeds the flute length of the tool");
+  if (p.floor_stock_mm < 0.0 || p.floor_stock_mm >= p.depth_mm)
+    return bad("floor_stock_mm must be in [0, depth_mm)");
+  if (p.wall_stock_mm < 0.0) return bad("wall_stock_mm must not be negative");
+  if (!(p.feed_mm_min > 0.0 && p.plunge_feed_mm_min > 0.0 && p.rapid_mm_min > 0.0))
+    return bad("feeds must be positive mm/min");
+  if (!(p.ramp_angle_deg > 0.0 && p.ramp_angle_deg <= 45.0))
+    return bad("ramp_angle_deg must be in (0, 45] degrees");
+  if (p.helix_radius_mm < 0.0) return bad("helix_radius_mm must not be negative");
+  if (p.plunge_candidates < 1 || p.plunge_candidates > 16)
+    return bad("plunge_candidates must be in [1, 16]");
+  if (p.smoothing_iterations < 0 || p.smoothing_iterations > 6)
+    return bad("smoothing_iterations must be in [0, 6]");
+  if (p.simplify_tolerance_mm < 0.0) return bad("simplify_tolerance_mm must not be negative");
+  if (p.clearance_z_mm <= p.top_z_mm) return bad("clearance_z_mm must be above top_z_mm");
+  return {};
+}
+
+namespace {
+
+using pocket::Entry;
+using pocket::LinkedPath;
+using pocket::Model;
+
+struct Recorder {
+  std::vector<std::uint32_t>* cells;
+  int width;
+  std::uint32_t tag;
+};
+void record(void* user, int i, int j) {
+  auto* r = static_cast<Recorder*>(user);
+  (*r->cells)[static_cast<std::size_t>(j) * r->width + i] = r->tag;
+}
+
+double angle_of(const Model& m, int px, double len) {
+  if (len <= 0.0 || px <= 0) return 0.0;
+  const double stepover = px * m.h * m.h / len;
+  return engagement_angle_deg(std::min(stepover, 2.0 * m.radius_mm), m.radius_mm);
+}
+
+// Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
+// gouges, the cut map, the material left.
+void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
+                AdaptiveResult& res) {
+  const Entry& e = entries.front();
+  pocket::PixelStock stock = pocket::fresh_stock(m);
+  CutMap& map = res.cut_map;
+  map.origin = m.grid.origin;
+  map.pixel_mm = m.h;
+  map.width = m.grid.width;
+  map.height = m.grid.height;
+  map.cells.assign(static_cast<std::size_t>(map.width) * map.height, 0u);
+  for (int j = 0; j < map.height; ++j)
+    for (int i = 0; i < map.width; ++i)
+      if (m.pocket.get(i, j)) map.cells[m.grid.index(i, j)] = 1u;
+  Recorder rec{&map.cells, map.width, 2u};
+  pocket::cut_entry(stock, m, e, record, &rec);
+  res.steps.clear();
+  res.gouge_steps = 0;
+  Vec2 prev_dir{0, 0};
+  for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
+    const Vec2 a = lp.pts[k], b = lp.pts[k + 1];
+    rec.tag = static_cast<std::uint32_t>(2 + res.steps.size() + 1);
+    int removed = 0;
+    if (lp.jump[k] && lp.entry[k] >= 0) {
+      pocket::cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])], record, &rec);
+    } else if (lp.jump[k]) {
+      removed = stock.stamp(b, record, &rec);
+      if (stock.gouges(b)) ++res.gouge_steps;
+    } else {
+      const double len = distance(a, b);
+      const int n = std::max(1, static_cast<int>(std::ceil(len / m.step_mm - 1e-9)));
+      Vec2 p = a;
+      for (int s = 1; s <= n; ++s) {
+        const Vec2 q = a + (b - a) * (static_cast<double>(s) / n);
+        if (stock.probe(p, q) < 0) ++res.gouge_steps;
+        removed += stock.cut(p, q, record, &rec);
+        p = q;
+      }
+    }
+    AdaptiveStep st;
+    st.position = b;
+    st.kind = lp.kind[k];
+    st.engagement_px = removed;
+    st.length_mm = lp.jump[k] ? 0.0 : distance(a, b);
+    st.engagement_deg = angle_of(m, removed, st.length_mm);
+    const Vec2 d = normalized(b - a);
+    if (k > 0 && !lp.jump[k] && !lp.jump[k - 1] && norm_sq(prev_dir) > 0)
+      st.deviation_deg = rad_to_deg(std::atan2(std::abs(cross(prev_dir, d)), dot(prev_dir, d)));
+    prev_dir = d;
+    res.steps.push_back(st);
+  }
+  // Material is initialised to what the tool can reach, so whatever is left was missed.
+  const std::size_t left = stock.material().count_all();
+  res.material_left_mm2 = static_cast<double>(left) * m.h * m.h;
+}
+
+double path_time_s(const LinkedPath& lp, const AdaptiveParams& p) {
+  double t = 0.0;
+  const double lift = 2.0 * (p.clearance_z_mm - (p.top_z_mm - p.depth_mm));
+  for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
+    const double l = distance(lp.pts[k], lp.pts[k + 1]);
+    t += lp.jump[k] ? (l + lift) / p.rapid_mm_min * 60.0 : l / p.feed_mm_min * 60.0;
+  }
+  return t;
+}
+
+Move make_move(MoveKind kind, Vec3 end, double feed, bool cutting) {
+  Move mv;
+  mv.kind = kind;
+  mv.end = end;
+  mv.feed_mm_min = feed;
+  mv.cutting = cutting;
+  return mv;
+}
+
+// Entry moves of one layer from z_from down to z_to.
+void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z_from,
+                 double z_to) {
+  const double tan_a = std::tan(deg_to_rad(p.ramp_angle_deg));
+  if (e.helix_radius_mm > 0.0) {
+    const Vec2 s = e.start;
+    tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(s, p.clearance_z_mm), 0, false));
+    tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(s, z_from), 0, false));
+    // Half turns, counter-clockwise for climb (the material ends up on the right).
+    const double half_drop = kPi * e.helix_radius_mm * tan_a;
+    double z = z_from;
+    bool at_start = true;
+    while (z > z_to + 1e-9) {
+      z = std::max(z_to, z - half_drop);
+      at_start = !at_start;
+      const Vec2 to = at_start ? s : e.centre * 2.0 - s;
+      Move mv = make_move(MoveKind::kHelix, to_vec3(to, z), p.plunge_feed_mm_min, true);
+      mv.center = to_vec3(e.centre, z);
+      mv.clockwise = !p.climb;
+      tp.moves.push_back(mv);
+    }
+    // A last full turn at depth clears the hole's floor.
+    for (int k = 0; k < 2; ++k) {
+      at_start = !at_start;
+      const Vec2 to = at_start ? s : e.centre * 2.0 - s;
+      Move mv = make_move(MoveKind::kArc, to_vec3(to, z_to), p.plunge_feed_mm_min, true);
+      mv.center = to_vec3(e.centre, z_to);
+      mv.clockwise = !p.climb;
+      tp.moves.push_back(mv);
+    }
+    return;
+  }
+  // Ramp: back and forth along the slot from a to b, ending at b at depth.
+  const double len = distance(e.ramp_a, e.ramp_b);
+  tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.ramp_a, p.clearance_z_mm), 0, false));
+  tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.ramp_a, z_from), 0, false));
+  double z = z_from;
+  bool at_a = true;
+  while (z > z_to + 1e-9) {
+    z = std::max(z_to, z - len * tan_a);
+    at_a = !at_a;
+    tp.moves.push_back(make_move(MoveKind::kRamp, to_vec3(at_a ? e.ramp_a : e.ramp_b, z),
+                                 p.plunge_feed_mm_min, true));
+  }
+  if (at_a)
+    tp.moves.push_back(
+        make_move(MoveKind::kFeed, to_vec3(e.ramp_b, z_to), p.plunge_feed_mm_min, true));
+}
+
+}  // namespace
+
+Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
+                                       const AdaptiveParams& params, const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(validate(params, tool));
+  if (pocket.region.rings.empty()) return bad_input(pocket.source + ": empty pocket");
+  auto model = pocket::make_model(pocket, tool, params);
+  if (!model) return model.status();
+  const Model& m = model.value();
+  // Candidates for the start, and spare entries for parts of the pocket behind necks
+  // narrower than the tool.
+  auto entries = pocket::find_entries(m, params, std::max(params.plunge_candidates, 16));
+  if (!entries) return entries.status();
+  pocket::LinkCosts costs;
+  costs.feed_mm_min = params.feed_mm_min;
+  costs.rapid_mm_min = params.rapid_mm_min;
+  costs.lift_mm = params.clearance_z_mm - (params.top_z_mm - params.depth_mm);
+  costs.smoothing_iterations = params.smoothing_iterations;
+  // seed 000 4.1: several plunge points; keep the fastest path (engagement is held to the
+  // same target by construction, so time decides).
+  std::size_t best = 0;
+  double best_time = 1e300;
+  std::vector<LinkedPath> paths;
+  std::vector<std::vector<Entry>> orders;
+  const std::size_t candidates =
+      std::min(entries->size(), static_cast<std::size_t>(params.plunge_candidates));
+  for (std::size_t k = 0; k < candidates; ++k) {
+    ctx.report("adaptive pocket", static_cast<double>(k) / static_cast<double>(candidates));
+    std::vector<Entry> order{(*entries)[k]};
+    for (std::size_t q = 0; q < entries->size(); ++q)
+      if (q != k) order.push_back((*entries)[q]);
+    pocket::PixelStock stock = pocket::fresh_stock(m);
+    pocket::cut_entry(stock, m, order.front());
+    auto raw = pocket::generate_raw_path(m, stock, order, ctx);
+    if (!raw) return raw.status();
+    paths.push_back(pocket::postprocess(m, order, raw.value(), costs));
+    orders.push_back(std::move(order));
+    const double t = path_time_s(paths.back(), params);
+    if (t < best_time) {
+      best_time = t;
+      best = k;
+    }
+  }
+  const std::vector<Entry>& order = orders[best];
+  const Entry& e = order.front();
+  const LinkedPath& lp = paths[best];
+  AdaptiveResult res;
+  res.resolution_mm = m.h;
+  res.step_mm = m.step_mm;
+  res.target_engagement_deg = m.target_deg;
+  res.target_engagement_px = m.target_px;
+  res.plunge_point = e.centre;
+  res.helix_radius_mm = e.helix_radius_mm;
+  res.trochoid_groups = lp.trochoid_groups;
+  res.boundary_groups = lp.boundary_groups;
+  resimulate(m, order, lp, res);
+
+  // Output simplification: runs between kind changes and jumps, Douglas-Peucker.
+  const double tol = params.simplify_tolerance_mm > 0.0 ? params.simplify_tolerance_mm : 0.25 * m.h;
+  std::vector<std::size_t> keep;
+  std::size_t run = 0;
+  for (std::size_t k = 1; k <= lp.kind.size(); ++k) {
+    const bool brk = k == lp.kind.size() || lp.jump[k] || lp.jump[k - 1] ||
+                     (lp.kind[k] == StepKind::kLink) != (lp.kind[k - 1] == StepKind::kLink);
+    if (!brk) continue;
+    std::vector<std::size_t> part;
+    pocket::simplify_indices(lp.pts, run, k, tol, part);
+    if (!keep.empty() && keep.back() == part.front()) part.erase(part.begin());
+    keep.insert(keep.end(), part.begin(), part.end());
+    run = k;
+  }
+  if (keep.empty()) keep.push_back(0);
+
+  Toolpath& tp = res.toolpath;
+  tp.name = "adaptive pocket";
+  tp.tool_number = tool.number;
+  char desc[64];
+  std::snprintf(desc, sizeof desc, "%g mm flat end mill", tool.diameter_mm);
+  tp.tool_description = desc;
+  tp.tool_diameter_mm = tool.diameter_mm;
+  tp.clearance_z_mm = params.clearance_z_mm;
+  const double bottom = params.top_z_mm - params.depth_mm + params.floor_stock_mm;
+  const double total = params.top_z_mm - bottom;
+  const double sd = params.stepdown_mm > 0.0 ? params.stepdown_mm : total;
+  const int layers = std::max(1, static_cast<int>(std::ceil(total / sd - 1e-9)));
+  res.layers = layers;
+  int retracts = 0;
+  for (int layer = 1; layer <= layers; ++layer) {
+    const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
+    const double z_prev = layer == 1 ? params.top_z_mm : params.top_z_mm - sd * (layer - 1);
+    entry_moves(tp, e, params, z_prev + 1.0, z);
+    Vec2 at = e.helix_radius_mm > 0.0 ? e.start : e.ramp_b;
+    if (distance(at, lp.pts.front()) > 1e-9)
+      tp.moves.push_back(
+          make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
+    for (std::size_t q = 1; q < keep.size(); ++q) {
+      const std::size_t a = keep[q - 1], b = keep[q];
+      const Vec3 end = to_vec3(lp.pts[b], z);
+      if (lp.jump[a] && lp.entry[a] >= 0) {
+        ++retracts;
+        tp.moves.push_back(
+            make_move(MoveKind::kRapid, to_vec3(lp.pts[a], params.clearance_z_mm), 0, false));
+        const Entry& ne = order[static_cast<std::size_t>(lp.entry[a])];
+        entry_moves(tp, ne, params, z_prev + 1.0, z);
+        continue;
+      }
+      if (lp.jump[a]) {
+        ++retracts;
+        tp.moves.push_back(
+            make_move(MoveKind::kRapid, to_vec3(lp.pts[a], params.clearance_z_mm), 0, false));
+        tp.moves.push_back(
+            make_move(MoveKind::kRapid, to_vec3(lp.pts[b], params.clearance_z_mm), 0, false));
+        tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(lp.pts[b], z_prev + 1.0), 0, false));
+        tp.moves.push_back(make_move(MoveKind::kPlunge, end, params.plunge_feed_mm_min, false));
+        continue;
+      }
+      double px = 0.0, len = 0.0;
+      bool link = true;
+      for (std::size_t s = a; s < b; ++s) {
+        px += res.steps[s].engagement_px;
+        len += res.steps[s].length_mm;
+        link = link && res.steps[s].engagement_px <= m.cut_px;
+      }
+      Move mv = make_move(MoveKind::kFeed, end, params.feed_mm_min, !link);
+      mv.engagement_deg = static_cast<float>(angle_of(m, static_cast<int>(px), len));
+      tp.moves.push_back(mv);
+    }
+    tp.moves.push_back(
+        make_move(MoveKind::kRapid,
+                  {tp.moves.back().end.x, tp.moves.back().end.y, params.clearance_z_mm}, 0, false));
+  }
+  res.retracts_per_layer = retracts / layers;
+  return res;
+}
+
+AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
+  AdaptiveSummary s;
+  std::vector<std::pair<double, double>> eng;  // angle, length
+  const double cut_px = std::max(2.0, 0.04 * r.target_engagement_px);
+  for (const AdaptiveStep& st : r.steps) {
+    if (st.engagement_px > cut_px) {
+      s.cutting_length_mm += st.length_mm;
+      eng.push_back({st.engagement_deg, st.length_mm});
+      s.max_deviation_deg = std::max(s.max_deviation_deg, st.deviation_deg);
+      if (std::abs(st.engagement_deg - r.target_engagement_deg) <= 0.2 * r.target_engagement_deg)
+        s.within_20pct += st.length_mm;
+    } else {
+      s.air_length_mm += st.length_mm;
+    }
+  }
+  const double layers = std::max(1, r.layers);
+  s.time_s = 0.0;
+  s.time_s = (s.cutting_length_mm + s.air_length_mm) * layers / p.feed_mm_min * 60.0;
+  if (s.cutting_length_mm > 0) s.within_20pct /= s.cutting_length_mm;
+  if (!eng.empty()) {
+    double sum = 0.0;
+    for (auto [a, l] : eng)
+      sum += a * l;
+    s.engagement_mean_deg = sum / s.cutting_length_mm;
+    std::sort(eng.begin(), eng.end());
+    auto pct = [&](double q) {
+      double acc = 0.0;
+      for (auto [a, l] : eng) {
+        acc += l;
+        if (acc >= q * s.cutting_length_mm) return a;
+      }
+      return eng.back().first;
+    };
+    s.engagement_p5_deg = pct(0.05);
+    s.engagement_p95_deg = pct(0.95);
+  }
+  return s;
+}
+
+std::string summary_line(const AdaptiveSummary& s) {
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "cutting %.1f mm, air %.1f mm, time %.1f s, engagement mean/p5/p95 "
+                "%.1f/%.1f/%.1f deg (%.0f %% within +-20 %%), max deviation %.1f deg",
+                s.cutting_length_mm, s.air_length_mm, s.time_s, s.engagement_mean_deg,
+                s.engagement_p5_deg, s.engagement_p95_deg, 100.0 * s.within_20pct,
+                s.max_deviation_deg);
+  return b;
+}
+
+std::string steps_csv(const AdaptiveResult& r) {
+  std::ostringstream o;
+  o << "index,x,y,kind,engagement_px,engagement_deg,deviation_deg,length_mm\n";
+  char b[256];
+  for (std::size_t k = 0; k < r.steps.size(); ++k) {
+    const AdaptiveStep& s = r.steps[k];
+    const char* kind = s.kind == StepKind::kCut        ? "cut"
+                       : s.kind == StepKind::kBoundary ? "boundary"
+                                                       : "link";
+    std::snprintf(b, sizeof b, "%zu,%.4f,%.4f,%s,%d,%.2f,%.2f,%.4f\n", k, s.position.x,
+                  s.position.y, kind, s.engagement_px, s.engagement_deg, s.deviation_deg,
+                  s.length_mm);
+    o << b;
+  }
+  return o.str();
+}
+
+}  // namespace swarf

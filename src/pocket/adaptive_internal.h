@@ -1,0 +1,97 @@
+// Internals of the adaptive pocket strategy, shared by its parts: the resolved model
+// (entry.cpp), the move chooser (move_chooser.cpp), post-processing and linking
+// (path_postprocess.cpp) and the driver (adaptive.cpp).
+#pragma once
+
+#include <vector>
+
+#include "pocket/pixel_stock.h"
+#include "swarf/core/context.h"
+#include "swarf/pocket/adaptive.h"
+
+namespace swarf::pocket {
+
+/// Everything derived from pocket, tool and parameters before the first move.
+struct Model {
+  double radius_mm = 0.0;    ///< tool radius
+  double step_mm = 0.0;      ///< seed 000 delta_step
+  double h = 0.0;            ///< pixel size
+  double stepover_mm = 0.0;  ///< target radial stepover
+  double target_deg = 0.0;
+  double target_px = 0.0;  ///< seed 000 eps_tar: pixels removed by one straight step
+  double tol_px = 0.0;     ///< seed 000 delta_tol
+  double cut_px = 0.0;     ///< a step removing more than this is a cutting step
+  int theta_max_deg = 90;
+  /// +1: material on the left (the paper's scan order); -1: mirrored, for climb milling.
+  int sigma = -1;
+  double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
+  double pocket_area_mm2 = 0.0;
+  Grid grid;
+  BitImage pocket;     ///< pixel centres inside the pocket
+  BitImage forbidden;  ///< pixel centres the tool disk may not cover
+  BitImage material;   ///< initial material: pocket pixels some free tool position covers
+  std::vector<float> clearance_sq;  ///< squared distance to the nearest forbidden pixel, px^2
+};
+
+Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& params);
+
+struct Entry {
+  Vec2 centre;                   ///< plunge point
+  double helix_radius_mm = 0.0;  ///< 0 for a ramp
+  Vec2 ramp_a, ramp_b;           ///< ramp segment (tool centre), when a ramp
+  Vec2 start;                    ///< where the adaptive moves begin
+  double start_angle_rad = 0.0;  ///< their first direction
+};
+
+/// Up to `count` entries at maxima of the medial axis, best (widest) first.
+/// kToolTooLarge / kNoEntryFound when there is none.
+Result<std::vector<Entry>> find_entries(const Model& model, const AdaptiveParams& params,
+                                        int count);
+/// Clears the entry hole or slot in the stock.
+void cut_entry(PixelStock& stock, const Model& model, const Entry& entry,
+               CutVisitor visit = nullptr, void* user = nullptr);
+PixelStock fresh_stock(const Model& model);
+
+/// The raw path of Algorithms 1-5: points, and per segment i (pts[i] -> pts[i+1]) the
+/// pixels it removed and how it was chosen.
+struct RawPath {
+  std::vector<Vec2> pts;
+  std::vector<int> eng;
+  std::vector<StepKind> kind;
+  /// The segment is a resume after a finished boundary round: not travelled, linked later.
+  std::vector<bool> jump;
+  /// For a jump: the index in `entries` of a new helix/ramp entry made there, else -1.
+  std::vector<int> entry;
+};
+/// `entries`: the first is where the path starts; the others are used, in order, for parts
+/// of the pocket the tool cannot reach from the cleared area (beyond a neck narrower than
+/// the tool) once nothing else is left.
+Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock,
+                                  const std::vector<Entry>& entries, const Context& ctx);
+
+/// The linked path: points and per segment its kind; `jump[i]` marks a segment travelled
+/// by retracting, moving at the clearance plane and coming down again.
+struct LinkedPath {
+  std::vector<Vec2> pts;
+  std::vector<StepKind> kind;
+  std::vector<bool> jump;
+  std::vector<int> entry;  ///< per segment: a jump that enters anew at entries[i], else -1
+  int trochoid_groups = 0;
+  int boundary_groups = 0;
+};
+struct LinkCosts {
+  double feed_mm_min = 1000.0;
+  double rapid_mm_min = 5000.0;
+  double lift_mm = 10.0;  ///< up and down distance of one retract
+  int smoothing_iterations = 2;
+};
+LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
+                       const LinkCosts& costs);
+
+/// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included.
+void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
+                      std::vector<std::size_t>& keep);
+/// Chaikin corner cutting with fixed ends (seed 000 6.6, [7]).
+std::vector<Vec2> chaikin(const std::vector<Vec2>& pts, int iterations);
+
+}  // namespace swarf::pocket

@@ -1,0 +1,254 @@
+// ASCII DXF pocket reader: LWPOLYLINE (bulges), LINE, ARC, CIRCLE of the ENTITIES section,
+// chained into closed loops.
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "pocket/geometry.h"
+#include "pocket/pocket_input_internal.h"
+#include "swarf/pocket/pocket_input.h"
+
+namespace swarf {
+
+namespace {
+
+using pocket::append_arc;
+
+struct Pair {
+  int code = 0;
+  std::string value;
+  std::size_t line = 0;
+};
+
+std::string trim(std::string_view s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a])))
+    ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1])))
+    --b;
+  return std::string(s.substr(a, b - a));
+}
+
+bool read_pairs(std::string_view text, std::vector<Pair>& out, std::string& error) {
+  std::size_t pos = 0, line = 0;
+  auto next_line = [&](std::string& l) {
+    if (pos >= text.size()) return false;
+    std::size_t e = text.find('\n', pos);
+    if (e == std::string_view::npos) e = text.size();
+    l = trim(text.substr(pos, e - pos));
+    pos = e + 1;
+    ++line;
+    return true;
+  };
+  std::string code, value;
+  while (next_line(code)) {
+    if (code.empty() && pos >= text.size()) break;
+    if (!next_line(value)) {
+      error = "line " + std::to_string(line) + ": group code without a value";
+      return false;
+    }
+    char* end = nullptr;
+    const long c = std::strtol(code.c_str(), &end, 10);
+    if (code.empty() || *end != '\0') {
+      error = "line " + std::to_string(line - 1) + ": group code '" + code.substr(0, 20) +
+              "' is not an integer (binary DXF is not supported)";
+      return false;
+    }
+    out.push_back({static_cast<int>(c), value, line});
+  }
+  return true;
+}
+
+bool to_double(const std::string& s, double& v) {
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return end != s.c_str() && std::isfinite(v);
+}
+
+void append_bulge(std::vector<Vec2>& out, Vec2 p1, Vec2 p2, double bulge, double tol) {
+  const double d = distance(p1, p2);
+  if (std::abs(bulge) < 1e-12 || d < 1e-12) {
+    out.push_back(p2);
+    return;
+  }
+  // The bulge is tan(included angle / 4), positive counter-clockwise.
+  const Vec2 c = p2 - p1;
+  const Vec2 mid = (p1 + p2) * 0.5;
+  const Vec2 centre = mid + perp(c / d) * (d * (1.0 - bulge * bulge) / (4.0 * bulge));
+  const double r = distance(centre, p1);
+  const double a0 = std::atan2(p1.y - centre.y, p1.x - centre.x);
+  std::vector<Vec2> pts;
+  append_arc(pts, centre, r, a0, a0 + 4.0 * std::atan(bulge), tol);
+  pts.back() = p2;
+  out.insert(out.end(), pts.begin(), pts.end());
+}
+
+std::string fmt(Vec2 p) {
+  char b[64];
+  std::snprintf(b, sizeof b, "(%.6g, %.6g)", p.x, p.y);
+  return b;
+}
+
+}  // namespace
+
+Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
+                                const CurveInputOptions& options) {
+  const std::string src(source);
+  const double tol = std::max(options.arc_tolerance_mm, 1e-6);
+  const double join = std::max(options.join_tolerance_mm, 1e-9);
+  std::vector<Pair> pairs;
+  std::string error;
+  if (!read_pairs(text, pairs, error)) return bad_input(src + ": " + error);
+  // Find the ENTITIES section.
+  std::size_t i = 0;
+  for (; i + 1 < pairs.size(); ++i)
+    if (pairs[i].code == 0 && pairs[i].value == "SECTION" && pairs[i + 1].code == 2 &&
+        pairs[i + 1].value == "ENTITIES")
+      break;
+  if (i + 1 >= pairs.size()) return bad_input(src + ": no ENTITIES section");
+  i += 2;
+  std::vector<Ring> loops;
+  std::vector<std::vector<Vec2>> chains;
+  std::vector<std::size_t> chain_lines;
+  while (i < pairs.size()) {
+    if (pairs[i].code != 0) {
+      ++i;
+      continue;
+    }
+    const std::string type = pairs[i].value;
+    const std::size_t line = pairs[i].line;
+    if (type == "ENDSEC" || type == "EOF") break;
+    std::size_t j = i + 1;
+    std::vector<Pair> body;
+    while (j < pairs.size() && pairs[j].code != 0)
+      body.push_back(pairs[j++]);
+    i = j;
+    const std::string where = src + ":" + std::to_string(line) + ": " + type;
+    auto num = [&](const Pair& p, double& v) { return to_double(p.value, v); };
+    if (type == "LWPOLYLINE") {
+      std::vector<Vec2> verts;
+      std::vector<double> bulges;
+      int flags = 0;
+      for (std::size_t k = 0; k < body.size(); ++k) {
+        double v = 0;
+        const Pair& p = body[k];
+        if (p.code == 70) flags = std::atoi(p.value.c_str());
+        if (p.code == 10) {
+          if (!num(p, v)) return bad_input(where + ": bad x at line " + std::to_string(p.line));
+          verts.push_back({v, 0.0});
+          bulges.push_back(0.0);
+        } else if (p.code == 20 && !verts.empty()) {
+          if (!num(p, v)) return bad_input(where + ": bad y at line " + std::to_string(p.line));
+          verts.back().y = v;
+        } else if (p.code == 42 && !bulges.empty()) {
+          if (!num(p, v)) return bad_input(where + ": bad bulge at line " + std::to_string(p.line));
+          bulges.back() = v;
+        }
+        if (verts.size() > 200000) return bad_input(where + ": too many vertices");
+      }
+      if (verts.size() < 2) return bad_input(where + ": fewer than 2 vertices");
+      const bool closed = (flags & 1) != 0;
+      std::vector<Vec2> pts{verts[0]};
+      for (std::size_t k = 0; k + 1 < verts.size(); ++k)
+        append_bulge(pts, verts[k], verts[k + 1], bulges[k], tol);
+      if (closed) {
+        append_bulge(pts, verts.back(), verts[0], bulges.back(), tol);
+        pts.pop_back();
+        loops.push_back(std::move(pts));
+      } else {
+        chains.push_back(std::move(pts));
+        chain_lines.push_back(line);
+      }
+    } else if (type == "LINE" || type == "ARC" || type == "CIRCLE") {
+      double x = 0, y = 0, x1 = 0, y1 = 0, r = 0, a0 = 0, a1 = 360;
+      for (const Pair& p : body) {
+        double v = 0;
+        const bool wanted = p.code == 10 || p.code == 20 || p.code == 11 || p.code == 21 ||
+                            p.code == 40 || p.code == 50 || p.code == 51;
+        if (!wanted) continue;
+        if (!num(p, v)) return bad_input(where + ": bad number at line " + std::to_string(p.line));
+        switch (p.code) {
+          case 10:
+            x = v;
+            break;
+          case 20:
+            y = v;
+            break;
+          case 11:
+            x1 = v;
+            break;
+          case 21:
+            y1 = v;
+            break;
+          case 40:
+            r = v;
+            break;
+          case 50:
+            a0 = v;
+            break;
+          default:
+            a1 = v;
+            break;
+        }
+      }
+      if (type == "LINE") {
+        chains.push_back({{x, y}, {x1, y1}});
+        chain_lines.push_back(line);
+        continue;
+      }
+      if (!(r > 0.0)) return bad_input(where + ": radius must be positive");
+      if (type == "CIRCLE") {
+        Ring ring;
+        append_arc(ring, {x, y}, r, 0.0, 2 * kPi, tol);
+        loops.push_back(std::move(ring));
+        continue;
+      }
+      // ARC: counter-clockwise from start angle to end angle, degrees.
+      double sweep = a1 - a0;
+      while (sweep <= 0.0)
+        sweep += 360.0;
+      if (sweep > 360.0) sweep = std::fmod(sweep, 360.0);
+      const double s = deg_to_rad(a0);
+      std::vector<Vec2> pts{{x + r * std::cos(s), y + r * std::sin(s)}};
+      append_arc(pts, {x, y}, r, s, s + deg_to_rad(sweep), tol);
+      chains.push_back(std::move(pts));
+      chain_lines.push_back(line);
+    }
+    if (chains.size() + loops.size() > 100000) return bad_input(src + ": too many entities");
+  }
+  // Chain open pieces end to end. Greedy: a loop closes when its end meets its start.
+  std::vector<bool> used(chains.size(), false);
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    if (used[c]) continue;
+    used[c] = true;
+    std::vector<Vec2> loop = chains[c];
+    while (distance(loop.front(), loop.back()) > join || loop.size() < 3) {
+      bool found = false;
+      for (std::size_t k = 0; k < chains.size() && !found; ++k) {
+        if (used[k]) continue;
+        const auto& ch = chains[k];
+        if (distance(ch.front(), loop.back()) <= join) {
+          loop.insert(loop.end(), ch.begin() + 1, ch.end());
+          found = true;
+        } else if (distance(ch.back(), loop.back()) <= join) {
+          loop.insert(loop.end(), ch.rbegin() + 1, ch.rend());
+          found = true;
+        }
+        if (found) used[k] = true;
+      }
+      if (!found) {
+        if (loop.size() >= 3 && distance(loop.front(), loop.back()) <= join) break;
+        return bad_input(src + ":" + std::to_string(chain_lines[c]) +
+                         ": open outline: the chain starting at " + fmt(loop.front()) +
+                         " ends at " + fmt(loop.back()) + " with nothing joining it");
+      }
+    }
+    loop.pop_back();  // the closing point repeats the first
+    loops.push_back(std::move(loop));
+  }
+  return pocket::pocket_from_loops(std::move(loops), source);
+}
+
+}  // namespace swarf

@@ -1,0 +1,221 @@
+// The resolved model (resolution rule, pixel stock set-up) and the entry: distance
+// transform, medial axis, plunge point at its maximum, helix or ramp (seed 000 4.1, 4.2).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "pocket/adaptive_internal.h"
+#include "pocket/distance_transform.h"
+#include "pocket/geometry.h"
+
+namespace swarf::pocket {
+
+namespace {
+
+std::string mm(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g mm", v);
+  return b;
+}
+
+double clearance_mm(const Model& m, int i, int j) {
+  return std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) * m.h;
+}
+
+// Clearance at an arbitrary point: nearest pixel's value minus half a pixel diagonal, so
+// that a point judged free really is (the disk test of the stock is the final word).
+double clearance_at(const Model& m, Vec2 p) {
+  const Vec2 q = m.grid.to_px(p);
+  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return 0.0;
+  return clearance_mm(m, i, j) - 0.71 * m.h;
+}
+
+}  // namespace
+
+Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& p) {
+  Model m;
+  m.radius_mm = tool.radius();
+  const double r = m.radius_mm;
+  m.stepover_mm = p.engagement_deg > 0.0 ? stepover_for_angle_mm(p.engagement_deg, r)
+                  : p.stepover_mm > 0.0  ? p.stepover_mm
+                                         : 0.1 * tool.diameter_mm;
+  m.target_deg = engagement_angle_deg(m.stepover_mm, r);
+  m.step_mm = p.step_mm > 0.0 ? p.step_mm : tool.diameter_mm / 20.0;
+  // Resolution rule (seed 000 section 3.2, made explicit): a straight step at the target
+  // stepover removes stepover x step mm^2. The count is noisy by about the square root of
+  // the pixels along the two crescent arcs; at >= 64 pixels per step that noise stays near
+  // 3-5 %, well inside the +-10 % band. The tool radius must also span >= 40 pixels so
+  // that the disk and the gouge margin (half a pixel) are accurate. h = the smaller of
+  // sqrt(stepover x step / 64) and R / 40.
+  m.h = p.resolution_mm > 0.0 ? p.resolution_mm
+                              : std::min(std::sqrt(m.stepover_mm * m.step_mm / 64.0), r / 40.0);
+  m.target_px = m.stepover_mm * m.step_mm / (m.h * m.h);
+  m.tol_px = std::max(1.0, m.target_px * p.tolerance_pct / 100.0);
+  m.cut_px = std::max(2.0, 0.04 * m.target_px);
+  m.theta_max_deg = static_cast<int>(std::lround(p.max_deviation_deg));
+  m.sigma = p.climb ? -1 : 1;
+
+  Box2 box;
+  for (const Ring& ring : pocket.region.rings)
+    for (Vec2 q : ring)
+      box.add(q);
+  const double margin = r + m.step_mm + p.wall_stock_mm + 4.0 * m.h;
+  m.grid = Grid::covering(box, m.h, margin);
+  if (static_cast<double>(m.grid.width) * m.grid.height > 6e7)
+    return bad_parameter("pocket " + pocket.source + ": resolution " + mm(m.h) +
+                         " needs more than 60 million pixels; raise resolution_mm");
+  m.pocket = rasterize(pocket.region, m.grid);
+  // Forbidden: outside the pocket, or closer to a wall than wall stock + half a pixel, by
+  // exact distance to the outline for pixels near it (the grid alone is only good to a
+  // pixel). The half pixel keeps the true disk within about 0.2 pixel of the wall.
+  const auto outside_sq = squared_distance_transform(m.pocket, false);
+  m.forbidden = BitImage(m.grid.width, m.grid.height);
+  const double keep = p.wall_stock_mm + 0.5 * m.h;
+  const double near_px = keep / m.h + 2.0;
+  for (int j = 0; j < m.grid.height; ++j)
+    for (int i = 0; i < m.grid.width; ++i) {
+      if (!m.pocket.get(i, j)) {
+        m.forbidden.set(i, j, true);
+        continue;
+      }
+      const double d_px = std::sqrt(static_cast<double>(outside_sq[m.grid.index(i, j)]));
+      if (d_px > near_px) continue;
+      if (distance_to_rings(pocket.region, m.grid.to_world(i, j)) < keep)
+        m.forbidden.set(i, j, true);
+    }
+  m.clearance_sq = squared_distance_transform(m.forbidden, true);
+  // Material is what the tool can reach: pixels within R of a centre whose disk is free.
+  // Corners the tool cannot enter and the wall margin are not material, so they neither
+  // count as engagement nor keep the tool searching near them.
+  {
+    const double r_px = r / m.h;
+    BitImage free_centres(m.grid.width, m.grid.height);
+    for (int j = 0; j < m.grid.height; ++j)
+      for (int i = 0; i < m.grid.width; ++i)
+        if (std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) > r_px)
+          free_centres.set(i, j, true);
+    const auto to_free = squared_distance_transform(free_centres, true);
+    m.material = BitImage(m.grid.width, m.grid.height);
+    const double r2 = r_px * r_px;
+    for (int j = 0; j < m.grid.height; ++j)
+      for (int i = 0; i < m.grid.width; ++i)
+        if (m.pocket.get(i, j) && !m.forbidden.get(i, j) &&
+            static_cast<double>(to_free[m.grid.index(i, j)]) <= r2)
+          m.material.set(i, j, true);
+  }
+  double perim = 0.0;
+  for (const Ring& ring : pocket.region.rings)
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      perim += distance(ring[k], ring[(k + 1) % ring.size()]);
+  m.boundary_round_mm =
+      perim + 2.0 * kPi * r * static_cast<double>(pocket.island_count()) + 4.0 * r;
+  double a = 0.0;
+  for (const Ring& ring : pocket.region.rings)
+    a += ring_area(ring);
+  m.pocket_area_mm2 = a;
+  return m;
+}
+
+PixelStock fresh_stock(const Model& m) {
+  return PixelStock(m.grid, m.material, m.forbidden, m.radius_mm, &m.clearance_sq);
+}
+
+Result<std::vector<Entry>> find_entries(const Model& m, const AdaptiveParams& p, int count) {
+  const double r = m.radius_mm;
+  const double r_px = r / m.h;
+  // Medial axis pixels whose disk fits (seed 000 Fig. 3).
+  const auto axis = medial_axis(m.clearance_sq, m.grid.width, m.grid.height, r_px + 1.0);
+  if (axis.empty()) {
+    double best = 0.0;
+    for (float v : m.clearance_sq)
+      best = std::max(best, static_cast<double>(v));
+    return Status(Error::kToolTooLarge,
+                  "the " + mm(2 * r) + " tool fits nowhere in the pocket (widest point " +
+                      mm(2 * std::sqrt(best) * m.h) + " across, wall stock included)");
+  }
+  std::vector<int> order(axis);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return m.clearance_sq[a] > m.clearance_sq[b]; });
+  const double want_helix = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
+  const double min_helix = std::max(2.0 * m.h, 0.1 * r);
+  std::vector<Entry> out;
+  std::vector<Vec2> chosen;
+  for (int idx : order) {
+    if (static_cast<int>(out.size()) >= count) break;
+    const int i = idx % m.grid.width, j = idx / m.grid.width;
+    const Vec2 c = m.grid.to_world(i, j);
+    const double room = clearance_mm(m, i, j) - r - m.h;  // helix radius that fits
+    bool far = true;
+    for (Vec2 q : chosen)
+      far = far && distance(q, c) > 2.0 * r + 2.0 * want_helix;
+    if (!far) continue;
+    Entry e;
+    e.centre = c;
+    if (room >= min_helix) {
+      e.helix_radius_mm = std::min(want_helix, room);
+      e.start = c + Vec2{e.helix_radius_mm, 0.0};
+      // Moving counter-clockwise round the hole keeps the material on the right (climb).
+      e.start_angle_rad = m.sigma < 0 ? kPi / 2 : -kPi / 2;
+    } else {
+      // Ramp: the longest straight line of free centres through c (5 degree directions).
+      double best_len = 0.0;
+      Vec2 ba, bb;
+      for (int deg = 0; deg < 180; deg += 5) {
+        const Vec2 d{std::cos(deg_to_rad(deg)), std::sin(deg_to_rad(deg))};
+        double t0 = 0.0, t1 = 0.0;
+        while (t1 < 4.0 * r && clearance_at(m, c + d * (t1 + m.h)) > r)
+          t1 += m.h;
+        while (t0 < 4.0 * r && clearance_at(m, c - d * (t0 + m.h)) > r)
+          t0 += m.h;
+        if (t0 + t1 > best_len) {
+          best_len = t0 + t1;
+          ba = c - d * t0;
+          bb = c + d * t1;
+        }
+      }
+      if (best_len < min_helix) continue;
+      e.ramp_a = ba;
+      e.ramp_b = bb;
+      e.start = bb;
+      e.start_angle_rad = std::atan2(bb.y - ba.y, bb.x - ba.x);
+    }
+    chosen.push_back(c);
+    out.push_back(e);
+  }
+  if (out.empty()) {
+    const int i = order.front() % m.grid.width, j = order.front() / m.grid.width;
+    const Vec2 c = m.grid.to_world(i, j);
+    char b[96];
+    std::snprintf(b, sizeof b, "(%.3f, %.3f)", c.x, c.y);
+    return Status(Error::kNoEntryFound, "the tool fits at " + std::string(b) +
+                                            " but there is no room for a helix or a ramp (needs " +
+                                            mm(std::max(2.0 * m.h, 0.1 * r)) + " of free travel)");
+  }
+  return out;
+}
+
+void cut_entry(PixelStock& stock, const Model& m, const Entry& e, CutVisitor visit, void* user) {
+  if (e.helix_radius_mm > 0.0) {
+    stock.stamp(e.centre, visit, user);
+    const int n = std::max(8, static_cast<int>(std::ceil(2 * kPi * e.helix_radius_mm / m.h)));
+    Vec2 prev = e.centre;
+    for (int k = 0; k <= n; ++k) {
+      const double a = 2 * kPi * k / n;
+      const Vec2 p = e.centre + Vec2{std::cos(a), std::sin(a)} * e.helix_radius_mm;
+      stock.cut(k == 0 ? Vec2{1e9, 1e9} : prev, p, visit, user);
+      prev = p;
+    }
+    return;
+  }
+  const double len = distance(e.ramp_a, e.ramp_b);
+  const int n = std::max(1, static_cast<int>(std::ceil(len / m.h)));
+  Vec2 prev{1e9, 1e9};
+  for (int k = 0; k <= n; ++k) {
+    const Vec2 p = e.ramp_a + (e.ramp_b - e.ramp_a) * (static_cast<double>(k) / n);
+    stock.cut(prev, p, visit, user);
+    prev = p;
+  }
+}
+
+}  // namespace swarf::pocket

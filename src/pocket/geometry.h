@@ -1,0 +1,40 @@
+// Small exact-geometry helpers of the pocket module: ring checks, point-in-region,
+// distances and arc flattening. Private to src/pocket.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "swarf/core/vec.h"
+#include "swarf/polygon/polygon.h"
+
+namespace swarf::pocket {
+
+/// Signed area, > 0 counter-clockwise (shoelace).
+double ring_area(const Ring& ring);
+/// Even-odd point-in-ring test (boundary points may go either way).
+bool point_in_ring(const Ring& ring, Vec2 p);
+/// Inside the outer ring and outside every island (rings[0] outer, rings[1..] islands).
+bool point_in_region(const PolygonSet& region, Vec2 p);
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
+/// Distance from p to the nearest edge of any ring.
+double distance_to_rings(const PolygonSet& region, Vec2 p);
+
+/// A place where two edges cross: ring and edge indices and the point.
+struct Crossing {
+  std::size_t ring_a = 0, edge_a = 0, ring_b = 0, edge_b = 0;
+  Vec2 point;
+};
+/// First crossing between non-adjacent edges of the rings (touching counts), or none.
+/// Sweep over x-sorted edge boxes: O(n log n + k).
+std::optional<Crossing> find_crossing(const std::vector<Ring>& rings);
+
+/// Removes consecutive duplicate points (closer than eps) and a closing duplicate.
+Ring cleaned_ring(const Ring& ring, double eps);
+
+/// Points of the circular arc from angle a0 to a1 (radians, either sign of sweep) about
+/// c, radius r, excluding the start point, including the end, with chord error <= tol.
+void append_arc(std::vector<Vec2>& out, Vec2 c, double r, double a0, double a1, double tol);
+
+}  // namespace swarf::pocket

@@ -1,0 +1,381 @@
+// Post-processing of the raw path (seed 000 section 6): cutting and non-cutting regions
+// (Algorithm 6), trochoidal stacks (Algorithm 7), boundary groups (6.3), composition
+// (Algorithm 8), gap patching with checked straight links and a boundary-following
+// fallback (6.5), retracts where staying down is slower, Chaikin smoothing of the joins
+// (6.6).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "pocket/adaptive_internal.h"
+
+namespace swarf::pocket {
+
+namespace {
+
+struct Region {
+  std::size_t first = 0, last = 0;  // point indices; segments first..last-1
+  bool cutting = false;
+  int group = -1;
+};
+
+// seed 000 Algorithm 6.
+std::vector<Region> segment_regions(const Model& m, const RawPath& raw) {
+  std::vector<Region> out;
+  const std::size_t n = raw.eng.size();
+  std::size_t i = 0;
+  while (i < n) {
+    const bool cutting = raw.eng[i] > m.cut_px;
+    std::size_t j = i;
+    while (j < n && (raw.eng[j] > m.cut_px) == cutting)
+      ++j;
+    out.push_back({i, j, cutting, -1});
+    i = j;
+  }
+  return out;
+}
+
+double distance_to_polyline(const std::vector<Vec2>& pts, const Region& r, Vec2 p) {
+  double d = 1e300;
+  for (std::size_t k = r.first; k < r.last; ++k) {
+    const Vec2 a = pts[k], b = pts[k + 1];
+    const Vec2 ab = b - a;
+    const double l2 = norm_sq(ab);
+    const double t = l2 > 0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+    d = std::min(d, distance(p, a + ab * t));
+  }
+  return d;
+}
+
+// seed 000 Algorithm 7's parallel test: sample the region, compare the closest distances
+// to the stack's top with the stepover.
+bool parallel(const Model& m, const std::vector<Vec2>& pts, const Region& top, const Region& r) {
+  const int samples = 7;
+  int ok = 0;
+  for (int s = 1; s <= samples; ++s) {
+    const std::size_t k = r.first + (r.last - r.first) * s / (samples + 1);
+    const double d = distance_to_polyline(pts, top, pts[k]);
+    if (d > 0.5 * m.stepover_mm && d < 1.5 * m.stepover_mm + m.step_mm) ++ok;
+  }
+  return ok >= samples - 2;
+}
+
+struct Groups {
+  int trochoid = 0;
+  int boundary = 0;
+};
+
+// Algorithm 7 and section 6.3. A cutting region joins the stack of the cutting region
+// just before it when parallel to its top; we do not search older stacks, so composing
+// (Algorithm 8) never reorders cuts and the material state every later check sees is the
+// one the raw path saw (the paper re-simulates and accepts the change).
+Groups group_regions(const Model& m, const RawPath& raw, std::vector<Region>& regions) {
+  Groups g;
+  int last_cut = -1, last_boundary = -1;
+  std::vector<std::size_t> top_cut, top_boundary;  // region index of each stack's top
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    Region& r = regions[k];
+    if (r.cutting) {
+      if (last_cut >= 0 && parallel(m, raw.pts, regions[top_cut[last_cut]], r)) {
+        r.group = last_cut;
+        top_cut[last_cut] = k;
+      } else {
+        r.group = g.trochoid++;
+        top_cut.push_back(k);
+      }
+      last_cut = r.group;
+    } else {
+      // Overlapping boundary moves: the top's end points lie on this (longer) region.
+      const double tol = m.step_mm + 2.0 * m.h;
+      if (last_boundary >= 0) {
+        const Region& top = regions[top_boundary[last_boundary]];
+        if (distance_to_polyline(raw.pts, r, raw.pts[top.first]) < tol &&
+            distance_to_polyline(raw.pts, r, raw.pts[top.last]) < tol) {
+          r.group = last_boundary;
+          continue;
+        }
+      }
+      r.group = g.boundary++;
+      top_boundary.push_back(k);
+      last_boundary = r.group;
+    }
+  }
+  return g;
+}
+
+// A straight move from a to b in sub-steps: true when it never gouges and never takes more
+// than the target engagement plus its tolerance (a link may graze the material front as it
+// arrives at the next cut, but never overloads the tool). Changes nothing.
+bool straight_ok(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
+  const double len = distance(a, b);
+  const int n = std::max(1, static_cast<int>(std::ceil(len / m.step_mm)));
+  // Sub-steps see the stock as it was before the link: a link that would cut its own way
+  // is rejected anyway, so the error is on the safe side.
+  Vec2 prev = a;
+  for (int k = 1; k <= n; ++k) {
+    const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
+    const int e = stock.probe(prev, p);
+    if (e < 0 || e > (m.target_px + m.tol_px) * distance(prev, p) / m.step_mm) return false;
+    prev = p;
+  }
+  return true;
+}
+
+// Appends the sub-steps of a straight move and cuts them.
+void apply_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
+  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
+  Vec2 prev = a;
+  for (int k = 1; k <= n; ++k) {
+    const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
+    stock.cut(prev, p);
+    out.push_back(p);
+    prev = p;
+  }
+}
+
+bool try_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
+  if (!straight_ok(m, stock, a, b)) return false;
+  apply_straight(m, stock, a, b, out);
+  return true;
+}
+
+// Shortens the boundary-following fallback (seed 000 6.5) by pulling it taut: from each
+// point, the farthest later point of the raw path reachable by a checked straight move
+// (exponential then binary search). Raw steps themselves are always acceptable.
+// Returns the kept indices after `first`; checks only, the caller cuts.
+std::vector<std::size_t> pull_taut(const Model& m, const PixelStock& stock,
+                                   const std::vector<Vec2>& pts, std::size_t first,
+                                   std::size_t last) {
+  std::vector<std::size_t> out;
+  std::size_t cur = first;
+  while (cur < last) {
+    std::size_t good = cur + 1, step = 2;
+    std::size_t bad = last + 1;
+    while (cur + step <= last) {
+      if (straight_ok(m, stock, pts[cur], pts[cur + step])) {
+        good = cur + step;
+        step *= 2;
+      } else {
+        bad = cur + step;
+        break;
+      }
+    }
+    if (bad == last + 1 && good != last && straight_ok(m, stock, pts[cur], pts[last]))
+      good = last;
+    else {
+      std::size_t lo = good, hi = std::min(bad, last + 1);
+      while (hi - lo > 1) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (straight_ok(m, stock, pts[cur], pts[mid]))
+          lo = mid;
+        else
+          hi = mid;
+      }
+      good = lo;
+    }
+    out.push_back(good);
+    cur = good;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Vec2> chaikin(const std::vector<Vec2>& pts, int iterations) {
+  std::vector<Vec2> cur = pts;
+  for (int it = 0; it < iterations && cur.size() > 2; ++it) {
+    std::vector<Vec2> next{cur.front()};
+    for (std::size_t k = 0; k + 1 < cur.size(); ++k) {
+      const Vec2 a = cur[k], b = cur[k + 1];
+      if (k > 0) next.push_back(a * 0.75 + b * 0.25);
+      if (k + 2 < cur.size()) next.push_back(a * 0.25 + b * 0.75);
+    }
+    next.push_back(cur.back());
+    cur = std::move(next);
+  }
+  return cur;
+}
+
+void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
+                      std::vector<std::size_t>& keep) {
+  // Iterative Douglas-Peucker (no recursion depth limit on long paths).
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{first, last}};
+  std::vector<bool> kept(last - first + 1, false);
+  kept.front() = kept.back() = true;
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    double worst = -1.0;
+    std::size_t at = a;
+    const Vec2 pa = pts[a], pb = pts[b];
+    const Vec2 ab = pb - pa;
+    const double l2 = norm_sq(ab);
+    for (std::size_t k = a + 1; k < b; ++k) {
+      const double t = l2 > 0 ? std::clamp(dot(pts[k] - pa, ab) / l2, 0.0, 1.0) : 0.0;
+      const double d = distance(pts[k], pa + ab * t);
+      if (d > worst) {
+        worst = d;
+        at = k;
+      }
+    }
+    if (worst > tol) {
+      kept[at - first] = true;
+      stack.push_back({a, at});
+      stack.push_back({at, b});
+    }
+  }
+  for (std::size_t k = first; k <= last; ++k)
+    if (kept[k - first]) keep.push_back(k);
+}
+
+LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const RawPath& raw,
+                       const LinkCosts& costs) {
+  const Entry& entry = entries.front();
+  LinkedPath out;
+  std::vector<Region> regions = segment_regions(m, raw);
+  const Groups groups = group_regions(m, raw, regions);
+  out.trochoid_groups = groups.trochoid;
+  out.boundary_groups = groups.boundary;
+  // Algorithm 8 composes the cutting regions (whole trochoid stacks, in order, see
+  // group_regions) with the first region of each boundary group; the gaps it leaves are
+  // patched (6.5). We patch every gap between two cutting regions the same way: a straight
+  // link, checked against walls (gouge) and material (it must not cut) on the stock as it
+  // is at that moment, else the raw boundary-following path between them (safe by
+  // construction), or a retract when that is faster than staying down.
+  PixelStock stock = fresh_stock(m);
+  cut_entry(stock, m, entry);
+  out.pts.push_back(raw.pts.front());
+  auto append_raw = [&](std::size_t first, std::size_t last, bool link) {
+    for (std::size_t k = first; k < last; ++k) {
+      stock.cut(raw.pts[k], raw.pts[k + 1]);
+      out.pts.push_back(raw.pts[k + 1]);
+      out.kind.push_back(link ? StepKind::kLink : raw.kind[k]);
+      out.jump.push_back(false);
+      out.entry.push_back(-1);
+    }
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> joins;  // out point index ranges to smooth
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const Region& r = regions[k];
+    const bool between_cuts = !r.cutting && k > 0 && k + 1 < regions.size();
+    if (!between_cuts) {
+      // Cutting regions, and a non-cutting head (moves from the entry to the material).
+      append_raw(r.first, r.last, false);
+      continue;
+    }
+    const Vec2 a = raw.pts[r.first], b = raw.pts[r.last];
+    const std::size_t before = out.pts.size() - 1;
+    bool has_jump = false;
+    for (std::size_t q = r.first; q < r.last; ++q)
+      has_jump = has_jump || raw.jump[q];
+    // A new entry: lift, enter there, then the raw moves to the next cut.
+    std::size_t fresh = r.last;
+    for (std::size_t q = r.first; q < r.last; ++q)
+      if (raw.jump[q] && raw.entry[q] >= 0) fresh = q;
+    if (fresh < r.last) {
+      cut_entry(stock, m, entries[static_cast<std::size_t>(raw.entry[fresh])]);
+      out.pts.push_back(raw.pts[fresh + 1]);
+      out.kind.push_back(StepKind::kLink);
+      out.jump.push_back(true);
+      out.entry.push_back(raw.entry[fresh]);
+      append_raw(fresh + 1, r.last, true);
+      continue;
+    }
+    std::vector<Vec2> link;
+    if (try_straight(m, stock, a, b, link)) {
+      for (Vec2 p : link) {
+        out.pts.push_back(p);
+        out.kind.push_back(StepKind::kLink);
+        out.jump.push_back(false);
+        out.entry.push_back(-1);
+      }
+      joins.push_back({before, out.pts.size() - 1});
+      continue;
+    }
+    // Fallback: the raw boundary-following path, pulled taut, unless a retract is faster.
+    std::vector<std::size_t> taut;
+    if (!has_jump) taut = pull_taut(m, stock, raw.pts, r.first, r.last);
+    double taut_len = 0.0;
+    Vec2 q0 = a;
+    for (std::size_t q : taut) {
+      taut_len += distance(q0, raw.pts[q]);
+      q0 = raw.pts[q];
+    }
+    const double stay_s = taut_len / costs.feed_mm_min;
+    const double lift_s =
+        (2.0 * costs.lift_mm + distance(a, b)) / costs.rapid_mm_min + 1.0 / costs.feed_mm_min;
+    // Keep the tool down where that is safe (seed 000 6.5); retract only when the way
+    // round is more than three times slower than lifting over.
+    if (has_jump || 3.0 * lift_s < stay_s) {
+      stock.stamp(b);
+      out.pts.push_back(b);
+      out.kind.push_back(StepKind::kLink);
+      out.jump.push_back(true);
+      out.entry.push_back(-1);
+    } else {
+      std::vector<Vec2> pts;
+      q0 = a;
+      for (std::size_t q : taut) {
+        apply_straight(m, stock, q0, raw.pts[q], pts);
+        q0 = raw.pts[q];
+      }
+      for (Vec2 p : pts) {
+        out.pts.push_back(p);
+        out.kind.push_back(StepKind::kLink);
+        out.jump.push_back(false);
+        out.entry.push_back(-1);
+      }
+      joins.push_back({before, out.pts.size() - 1});
+    }
+  }
+  // Chaikin smoothing of each straight link with a few points of the cuts on either side
+  // (seed 000 6.6); a smoothed window that would gouge is left as it was.
+  const std::size_t w = 4;
+  std::vector<Vec2> smoothed = out.pts;
+  const PixelStock walls = fresh_stock(m);  // gouge test only (forbidden pixels)
+  for (const auto& [j0, j1] : joins) {
+    const std::size_t a = j0 >= w ? j0 - w : 0;
+    const std::size_t b = std::min(out.pts.size() - 1, j1 + w);
+    bool clean = true;
+    for (std::size_t k = a; k < b; ++k)
+      clean = clean && !out.jump[k];
+    if (!clean || b <= a + 2) continue;
+    std::vector<Vec2> win(out.pts.begin() + static_cast<std::ptrdiff_t>(a),
+                          out.pts.begin() + static_cast<std::ptrdiff_t>(b) + 1);
+    std::vector<Vec2> sm = chaikin(win, costs.smoothing_iterations);
+    // Resample back to the window's point count so kinds stay aligned.
+    std::vector<double> cum{0.0};
+    for (std::size_t k = 1; k < sm.size(); ++k)
+      cum.push_back(cum.back() + distance(sm[k - 1], sm[k]));
+    std::vector<double> wcum{0.0};
+    for (std::size_t k = 1; k < win.size(); ++k)
+      wcum.push_back(wcum.back() + distance(win[k - 1], win[k]));
+    std::vector<Vec2> res(win.size());
+    std::size_t seg = 0;
+    for (std::size_t k = 0; k < win.size(); ++k) {
+      const double t = wcum.back() > 0 ? wcum[k] / wcum.back() * cum.back() : 0.0;
+      while (seg + 2 < sm.size() && cum[seg + 1] < t)
+        ++seg;
+      const double l = cum[seg + 1] - cum[seg];
+      const double u = l > 0 ? std::clamp((t - cum[seg]) / l, 0.0, 1.0) : 0.0;
+      res[k] = sm[seg] + (sm[seg + 1] - sm[seg]) * u;
+    }
+    // Check the vertices and points a pixel apart along the new segments (a chord can cut
+    // a convex corner its ends clear).
+    bool ok = true;
+    for (std::size_t k = 0; k < res.size() && ok; ++k) {
+      ok = !walls.gouges(res[k]);
+      if (k == 0) continue;
+      const int n = static_cast<int>(distance(res[k - 1], res[k]) / m.h);
+      for (int q = 1; q < n && ok; ++q)
+        ok = !walls.gouges(res[k - 1] + (res[k] - res[k - 1]) * (static_cast<double>(q) / n));
+    }
+    if (ok)
+      for (std::size_t k = 0; k < res.size(); ++k)
+        smoothed[a + k] = res[k];
+  }
+  out.pts = std::move(smoothed);
+  return out;
+}
+
+}  // namespace swarf::pocket

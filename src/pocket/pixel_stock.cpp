@@ -1,0 +1,245 @@
+#include "pocket/pixel_stock.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace swarf::pocket {
+
+Grid Grid::covering(const Box2& box, double h, double margin) {
+  Grid g;
+  g.h = h;
+  g.origin = box.min - Vec2{margin, margin};
+  const Vec2 size = box.size() + Vec2{2 * margin, 2 * margin};
+  g.width = static_cast<int>(std::ceil(size.x / h)) + 1;
+  g.height = static_cast<int>(std::ceil(size.y / h)) + 1;
+  return g;
+}
+
+BitImage::BitImage(int width, int height)
+    : width_(width),
+      height_(height),
+      words_((width + 63) / 64),
+      bits_(static_cast<std::size_t>(words_) * static_cast<std::size_t>(height), 0u) {}
+
+void BitImage::set(int i, int j, bool v) {
+  std::uint64_t& w = row(j)[static_cast<std::size_t>(i) >> 6];
+  const std::uint64_t m = std::uint64_t{1} << (static_cast<unsigned>(i) & 63u);
+  w = v ? (w | m) : (w & ~m);
+}
+
+namespace {
+inline std::uint64_t mask_from(int b) {
+  return ~std::uint64_t{0} << static_cast<unsigned>(b);
+}
+inline std::uint64_t mask_to(int b) {  // bits 0..b inclusive
+  return b >= 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << static_cast<unsigned>(b + 1)) - 1;
+}
+}  // namespace
+
+int BitImage::count(int j, int x0, int x1) const {
+  const std::uint64_t* r = row(j);
+  const int w0 = x0 >> 6, w1 = x1 >> 6;
+  if (w0 == w1) return std::popcount(r[w0] & mask_from(x0 & 63) & mask_to(x1 & 63));
+  int n = std::popcount(r[w0] & mask_from(x0 & 63));
+  for (int w = w0 + 1; w < w1; ++w)
+    n += std::popcount(r[w]);
+  return n + std::popcount(r[w1] & mask_to(x1 & 63));
+}
+
+int BitImage::clear(int j, int x0, int x1) {
+  std::uint64_t* r = row(j);
+  const int w0 = x0 >> 6, w1 = x1 >> 6;
+  int n = 0;
+  for (int w = w0; w <= w1; ++w) {
+    std::uint64_t m = ~std::uint64_t{0};
+    if (w == w0) m &= mask_from(x0 & 63);
+    if (w == w1) m &= mask_to(x1 & 63);
+    n += std::popcount(r[w] & m);
+    r[w] &= ~m;
+  }
+  return n;
+}
+
+std::size_t BitImage::count_all() const {
+  std::size_t n = 0;
+  for (std::uint64_t w : bits_)
+    n += static_cast<std::size_t>(std::popcount(w));
+  return n;
+}
+
+BitImage rasterize(const PolygonSet& region, const Grid& grid) {
+  BitImage img(grid.width, grid.height);
+  std::vector<double> xs;
+  for (int j = 0; j < grid.height; ++j) {
+    const double y = grid.origin.y + j * grid.h;
+    xs.clear();
+    for (const Ring& r : region.rings)
+      for (std::size_t k = 0, n = r.size(); k < n; ++k) {
+        const Vec2 a = r[k], b = r[(k + 1) % n];
+        if ((a.y > y) != (b.y > y)) xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+      }
+    std::sort(xs.begin(), xs.end());
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const int i0 = std::max(0, static_cast<int>(std::ceil((xs[k] - grid.origin.x) / grid.h)));
+      const int i1 = std::min(grid.width - 1,
+                              static_cast<int>(std::floor((xs[k + 1] - grid.origin.x) / grid.h)));
+      for (int i = i0; i <= i1; ++i)
+        img.set(i, j, true);
+    }
+  }
+  return img;
+}
+
+PixelStock::PixelStock(Grid grid, BitImage material, BitImage forbidden, double tool_radius_mm,
+                       const std::vector<float>* clearance_sq)
+    : grid_(grid),
+      material_(std::move(material)),
+      forbidden_(std::move(forbidden)),
+      radius_px_(tool_radius_mm / grid.h),
+      clearance_sq_(clearance_sq) {
+  reach_ = static_cast<int>(std::ceil(radius_px_)) + 1;
+  rows_ = 2 * reach_ + 2;
+  half_.assign(static_cast<std::size_t>(kSub) * rows_, -1.0);
+  for (int f = 0; f < kSub; ++f)
+    for (int o = 0; o < rows_; ++o) {
+      const double dy = (o - reach_) - static_cast<double>(f) / kSub;
+      const double q = radius_px_ * radius_px_ - dy * dy;
+      half_[static_cast<std::size_t>(f) * rows_ + o] = q >= 0.0 ? std::sqrt(q) : -1.0;
+    }
+}
+
+// Calls fn(j, x0, x1) for each row piece of disk(to) \ disk(from) (pixel centres, radius
+// radius_px_). Returns false when the disk leaves the image (counts as a gouge: the image
+// border is far outside the pocket).
+template <class RowFn>
+bool PixelStock::crescent_rows(Vec2 from, Vec2 to, RowFn&& fn) const {
+  // Centres' y snapped to 1/kSub pixel so that row half widths come from the table.
+  const Vec2 a = grid_.to_px(from), b = grid_.to_px(to);
+  const double r = radius_px_;
+  if (b.y - r < 0 || b.y + r > grid_.height - 1 || b.x - r < 0 || b.x + r > grid_.width - 1)
+    return false;
+  const double by_floor = std::floor(b.y);
+  const int bY = static_cast<int>(by_floor);
+  const int bf = std::min(kSub - 1, static_cast<int>((b.y - by_floor) * kSub));
+  const double* hb = half_.data() + static_cast<std::size_t>(bf) * rows_;
+  const double ay_floor = std::floor(a.y);
+  const bool a_near = std::abs(a.y - b.y) < 2.0 * r + 2.0;
+  const int aY = a_near ? static_cast<int>(ay_floor) : 0;
+  const int af = a_near ? std::min(kSub - 1, static_cast<int>((a.y - ay_floor) * kSub)) : 0;
+  const double* ha = half_.data() + static_cast<std::size_t>(af) * rows_;
+  for (int o = 0; o < rows_; ++o) {
+    const double half = hb[o];
+    if (half < 0.0) continue;
+    const int j = bY + o - reach_;
+    const int x0 = static_cast<int>(std::ceil(b.x - half)),
+              x1 = static_cast<int>(std::floor(b.x + half));
+    if (x0 > x1) continue;
+    const int oa = j - aY + reach_;
+    const double hA = (a_near && oa >= 0 && oa < rows_) ? ha[oa] : -1.0;
+    if (hA < 0.0) {
+      if (!fn(j, x0, x1)) return true;
+      continue;
+    }
+    const int a0 = static_cast<int>(std::ceil(a.x - hA)),
+              a1 = static_cast<int>(std::floor(a.x + hA));
+    if (a0 > a1) {
+      if (!fn(j, x0, x1)) return true;
+      continue;
+    }
+    if (x0 <= std::min(x1, a0 - 1) && !fn(j, x0, std::min(x1, a0 - 1))) return true;
+    if (std::max(x0, a1 + 1) <= x1 && !fn(j, std::max(x0, a1 + 1), x1)) return true;
+  }
+  return true;
+}
+
+int PixelStock::probe(Vec2 from, Vec2 to) const {
+  int n = 0;
+  bool gouge = false;
+  if (clearance_sq_ != nullptr) {
+    // Far from every forbidden pixel (nearest pixel's clearance minus the distance to it
+    // exceeds the radius by a pixel): only material needs counting.
+    const Vec2 q = grid_.to_px(to);
+    const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+    if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
+      const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+      if (c - 0.71 > radius_px_ + 1.0) {
+        crescent_rows(from, to, [&](int jj, int x0, int x1) {
+          n += material_.count(jj, x0, x1);
+          return true;
+        });
+        return n;
+      }
+    }
+  }
+  const bool inside = crescent_rows(from, to, [&](int j, int x0, int x1) {
+    if (forbidden_.count(j, x0, x1) > 0) {
+      gouge = true;
+      return false;
+    }
+    n += material_.count(j, x0, x1);
+    return true;
+  });
+  return (!inside || gouge) ? kGouge : n;
+}
+
+int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
+  int n = 0;
+  crescent_rows(from, to, [&](int j, int x0, int x1) {
+    if (visit != nullptr)
+      for (int i = x0; i <= x1; ++i)
+        if (material_.get(i, j)) visit(user, i, j);
+    n += material_.clear(j, x0, x1);
+    return true;
+  });
+  return n;
+}
+
+namespace {
+// A point far enough away that its disk misses every row: turns the crescent into a disk.
+Vec2 far_away(Vec2 c, double r_mm) {
+  return c + Vec2{0.0, 1e6 + 4.0 * r_mm};
+}
+}  // namespace
+
+bool PixelStock::gouges(Vec2 centre) const {
+  bool gouge = false;
+  if (clearance_sq_ != nullptr) {
+    // Decided by the clearance of the nearest pixel when it is more than a pixel from R.
+    const Vec2 q = grid_.to_px(centre);
+    const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+    if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
+      const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+      if (c - 0.71 > radius_px_ + 1.0) return false;
+      if (c + 0.71 < radius_px_ - 1.0) return true;
+    }
+  }
+  const bool inside =
+      crescent_rows(far_away(centre, tool_radius_mm()), centre, [&](int j, int x0, int x1) {
+        gouge = forbidden_.count(j, x0, x1) > 0;
+        return !gouge;
+      });
+  return gouge || !inside;
+}
+
+int PixelStock::material_in_disk(Vec2 centre, double radius_mm) const {
+  const Vec2 c = grid_.to_px(centre);
+  const double r = radius_mm / grid_.h;
+  int n = 0;
+  const int j0 = std::max(0, static_cast<int>(std::ceil(c.y - r)));
+  const int j1 = std::min(grid_.height - 1, static_cast<int>(std::floor(c.y + r)));
+  for (int j = j0; j <= j1; ++j) {
+    const double dy = j - c.y;
+    const double half = std::sqrt(std::max(0.0, r * r - dy * dy));
+    const int x0 = std::max(0, static_cast<int>(std::ceil(c.x - half)));
+    const int x1 = std::min(grid_.width - 1, static_cast<int>(std::floor(c.x + half)));
+    if (x0 <= x1) n += material_.count(j, x0, x1);
+  }
+  return n;
+}
+
+int PixelStock::stamp(Vec2 centre, CutVisitor visit, void* user) {
+  return cut(far_away(centre, tool_radius_mm()), centre, visit, user);
+}
+
+}  // namespace swarf::pocket

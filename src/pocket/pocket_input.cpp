@@ -1,0 +1,155 @@
+#include "swarf/pocket/pocket_input.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pocket/geometry.h"
+#include "pocket/pocket_input_internal.h"
+
+namespace swarf {
+
+namespace {
+
+// snprintf rather than string concatenation: GCC 12 warns falsely (-Wrestrict) on the latter.
+std::string fmt(Vec2 p) {
+  char b[64];
+  std::snprintf(b, sizeof b, "(%.6g, %.6g)", p.x, p.y);
+  return b;
+}
+
+std::string ring_name(std::size_t i) {
+  return i == 0 ? std::string("outer boundary") : "island " + std::to_string(i);
+}
+
+// Inputs larger than this are rejected rather than checked for hours (and the fuzzer
+// stays fast); real pockets have a few thousand points.
+constexpr std::size_t kMaxPoints = 200000;
+
+}  // namespace
+
+Result<Pocket> make_pocket(Ring outer, std::vector<Ring> islands, std::string_view source) {
+  const std::string src(source);
+  std::vector<Ring> rings;
+  rings.push_back(std::move(outer));
+  for (Ring& r : islands)
+    rings.push_back(std::move(r));
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    for (std::size_t k = 0; k < rings[i].size(); ++k)
+      if (!std::isfinite(rings[i][k].x) || !std::isfinite(rings[i][k].y))
+        return bad_input(src + ": " + ring_name(i) + ": point " + std::to_string(k) +
+                         " has a non-finite coordinate");
+    rings[i] = pocket::cleaned_ring(rings[i], 1e-9);
+    total += rings[i].size();
+    if (rings[i].size() < 3)
+      return bad_input(src + ": " + ring_name(i) + ": fewer than 3 distinct points");
+  }
+  if (total > kMaxPoints)
+    return bad_input(src + ": " + std::to_string(total) + " points, more than the " +
+                     std::to_string(kMaxPoints) + " accepted");
+  if (const auto x = pocket::find_crossing(rings)) {
+    if (x->ring_a == x->ring_b)
+      return bad_input(src + ": " + ring_name(x->ring_a) + " intersects itself: edge " +
+                       std::to_string(x->edge_a) + " meets edge " + std::to_string(x->edge_b) +
+                       " at " + fmt(x->point));
+    return bad_input(src + ": " + ring_name(x->ring_a) + " (edge " + std::to_string(x->edge_a) +
+                     ") crosses " + ring_name(x->ring_b) + " (edge " + std::to_string(x->edge_b) +
+                     ") at " + fmt(x->point));
+  }
+  for (std::size_t i = 0; i < rings.size(); ++i)
+    if (std::abs(pocket::ring_area(rings[i])) < 1e-9)
+      return bad_input(src + ": " + ring_name(i) + ": encloses no area");
+  // No crossings: one vertex tells on which side of another ring a whole ring lies.
+  for (std::size_t i = 1; i < rings.size(); ++i) {
+    if (!pocket::point_in_ring(rings[0], rings[i][0]))
+      return bad_input(src + ": " + ring_name(i) + " at " + fmt(rings[i][0]) +
+                       " lies outside the outer boundary");
+    for (std::size_t j = 1; j < rings.size(); ++j)
+      if (j != i && pocket::point_in_ring(rings[j], rings[i][0]))
+        return bad_input(src + ": " + ring_name(i) + " lies inside " + ring_name(j));
+  }
+  Pocket p;
+  p.source = src;
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    const bool ccw = pocket::ring_area(rings[i]) > 0.0;
+    if (ccw != (i == 0)) std::reverse(rings[i].begin(), rings[i].end());
+    p.region.rings.push_back(std::move(rings[i]));
+  }
+  return p;
+}
+
+namespace pocket {
+
+Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view source) {
+  if (loops.empty()) return bad_input(std::string(source) + ": no closed outline found");
+  std::size_t outer = 0;
+  for (std::size_t i = 1; i < loops.size(); ++i)
+    if (std::abs(ring_area(loops[i])) > std::abs(ring_area(loops[outer]))) outer = i;
+  std::vector<Ring> islands;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (i != outer) islands.push_back(std::move(loops[i]));
+  return make_pocket(std::move(loops[outer]), std::move(islands), source);
+}
+
+}  // namespace pocket
+
+namespace {
+
+Result<Ring> json_ring(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_array()) return bad_input(where + ": expected an array of [x, y] points");
+  Ring r;
+  for (std::size_t k = 0; k < j.size(); ++k) {
+    const auto& p = j[k];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      return bad_input(where + ": point " + std::to_string(k) + " is not [x, y] numbers");
+    r.push_back({p[0].get<double>(), p[1].get<double>()});
+  }
+  return r;
+}
+
+}  // namespace
+
+Result<Pocket> parse_pocket_json(std::string_view text, std::string_view source) {
+  const std::string src(source);
+  nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+  if (j.is_discarded()) return bad_input(src + ": not valid JSON");
+  if (!j.is_object() || !j.contains("outer"))
+    return bad_input(src + ": expected an object with an \"outer\" array of [x, y] points");
+  auto outer = json_ring(j["outer"], src + ": outer");
+  if (!outer) return outer.status();
+  std::vector<Ring> islands;
+  if (j.contains("islands")) {
+    const auto& is = j["islands"];
+    if (!is.is_array()) return bad_input(src + ": \"islands\" must be an array of rings");
+    for (std::size_t i = 0; i < is.size(); ++i) {
+      auto r = json_ring(is[i], src + ": island " + std::to_string(i + 1));
+      if (!r) return r.status();
+      islands.push_back(std::move(r.value()));
+    }
+  }
+  return make_pocket(std::move(outer.value()), std::move(islands), source);
+}
+
+Result<Pocket> read_pocket(const std::string& path, const CurveInputOptions& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status(Error::kIo, path + ": cannot open the pocket file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::string ext;
+  if (const auto dot = path.rfind('.'); dot != std::string::npos) ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == "json") return parse_pocket_json(text, path);
+  if (ext == "svg") return parse_pocket_svg(text, path, options);
+  if (ext == "dxf") return parse_pocket_dxf(text, path, options);
+  return bad_input(path + ": unknown pocket format '" + ext + "' (expected .json, .svg or .dxf)");
+}
+
+}  // namespace swarf

@@ -1,0 +1,256 @@
+// Seed 003 section 2.3: stock allowance and tool-radius offset, voxel projection.
+#include "voxel/machinable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include "swarf/core/parallel.h"
+
+namespace swarf::voxel_detail {
+namespace {
+
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+// Heights within this of a layer's threshold count as blocking (round towards safety).
+constexpr double kHeightEps = 1e-7;
+
+// A stencil as one x-interval of cell offsets per row offset: every convex shape (disk,
+// stadium, square) is one interval per row.
+struct StencilRow {
+  int dy, lo, hi;
+};
+
+// Distance between the closed intervals [a0, a1] and [b0, b1].
+double gap(double a0, double a1, double b0, double b1) {
+  return std::max({0.0, b0 - a1, a0 - b1});
+}
+
+// Cells whose closed square comes closer than `radius` to the segment from the centre of
+// cell (0, 0) to the centre of cell (sx, sy) (sx, sy in {0, 1}), in cell units.
+std::vector<StencilRow> segment_stencil(double radius, double cell, int sx, int sy) {
+  std::vector<StencilRow> rows;
+  const int k = static_cast<int>(std::ceil(radius / cell)) + 2;
+  for (int dy = -k; dy <= k; ++dy) {
+    int lo = 1, hi = 0;
+    for (int dx = -k; dx <= k; ++dx) {
+      const double gx = gap(0.0, sx * cell, (dx - 0.5) * cell, (dx + 0.5) * cell);
+      const double gy = gap(0.0, sy * cell, (dy - 0.5) * cell, (dy + 0.5) * cell);
+      // Touching at exactly the radius counts as blocked: round towards safety.
+      if (std::hypot(gx, gy) < radius * (1.0 + 1e-12) + 1e-9) {
+        if (lo > hi) lo = hi = dx;
+        hi = dx;
+      }
+    }
+    if (lo <= hi) rows.push_back({dy, lo, hi});
+  }
+  return rows;
+}
+
+// max over di in [lo, hi] of h(i + di, j), for every cell (monotonic queue per row).
+std::vector<double> row_window_max(const std::vector<double>& h, int nx, int ny, int lo, int hi,
+                                   int threads) {
+  std::vector<double> out(h.size(), kNegInf);
+  parallel_for(static_cast<std::size_t>(ny), threads, [&](std::size_t j) {
+    const double* row = h.data() + j * static_cast<std::size_t>(nx);
+    double* dst = out.data() + j * static_cast<std::size_t>(nx);
+    std::vector<int> q(static_cast<std::size_t>(nx));
+    std::size_t head = 0, tail = 0;
+    int next = 0;
+    for (int i = 0; i < nx; ++i) {
+      const int wlo = i + lo, whi = std::min(i + hi, nx - 1);
+      for (; next <= whi; ++next) {
+        if (next < 0) continue;
+        while (tail > head && row[q[tail - 1]] <= row[next])
+          --tail;
+        q[tail++] = next;
+      }
+      while (tail > head && q[head] < wlo)
+        ++head;
+      dst[i] = tail > head ? row[q[head]] : kNegInf;
+    }
+  });
+  return out;
+}
+
+std::vector<double> dilate(const std::vector<double>& h, int nx, int ny,
+                           const std::vector<StencilRow>& stencil, int threads) {
+  std::map<std::pair<int, int>, std::vector<double>> windows;
+  for (const StencilRow& r : stencil) {
+    auto key = std::make_pair(r.lo, r.hi);
+    if (!windows.count(key)) windows.emplace(key, row_window_max(h, nx, ny, r.lo, r.hi, threads));
+  }
+  std::vector<double> out(h.size(), kNegInf);
+  parallel_for(static_cast<std::size_t>(ny), threads, [&](std::size_t jr) {
+    const int j = static_cast<int>(jr);
+    for (const StencilRow& r : stencil) {
+      const int js = j + r.dy;
+      if (js < 0 || js >= ny) continue;
+      const auto& w = windows.at({r.lo, r.hi});
+      const std::size_t src = static_cast<std::size_t>(js) * static_cast<std::size_t>(nx);
+      const std::size_t dst = jr * static_cast<std::size_t>(nx);
+      for (int i = 0; i < nx; ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        out[dst + ii] = std::max(out[dst + ii], w[src + ii]);
+      }
+    }
+  });
+  return out;
+}
+
+// Distance from segment pq to the closed axis-aligned square [lo, hi].
+double segment_square_distance(Vec2 p, Vec2 q, Vec2 lo, Vec2 hi) {
+  auto point_box = [&](Vec2 a) {
+    return std::hypot(gap(a.x, a.x, lo.x, hi.x), gap(a.y, a.y, lo.y, hi.y));
+  };
+  auto point_seg = [&](Vec2 a) {
+    const Vec2 d = q - p;
+    const double l2 = norm_sq(d);
+    const double t = l2 > 0.0 ? std::clamp(dot(a - p, d) / l2, 0.0, 1.0) : 0.0;
+    return distance(a, p + d * t);
+  };
+  // Does the segment cross the square? (Liang-Barsky clip.)
+  double t0 = 0.0, t1 = 1.0;
+  const Vec2 d = q - p;
+  bool inside = true;
+  for (int axis = 0; axis < 2 && inside; ++axis) {
+    const double pa = axis == 0 ? p.x : p.y, da = axis == 0 ? d.x : d.y;
+    const double l = axis == 0 ? lo.x : lo.y, h = axis == 0 ? hi.x : hi.y;
+    if (da == 0.0) {
+      if (pa < l || pa > h) inside = false;
+    } else {
+      double a = (l - pa) / da, b = (h - pa) / da;
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+      if (t0 > t1) inside = false;
+    }
+  }
+  if (inside) return 0.0;
+  return std::min({point_box(p), point_box(q), point_seg(lo), point_seg(hi),
+                   point_seg({lo.x, hi.y}), point_seg({hi.x, lo.y})});
+}
+
+}  // namespace
+
+Reach compute_reach(const VoxelModel& m, double tool_radius_mm, double allowance_mm,
+                    OffsetRule rule, int threads) {
+  Reach r;
+  r.radius_mm = tool_radius_mm + allowance_mm;
+  r.allowance_mm = allowance_mm;
+  r.rule = rule;
+  const std::size_t n = static_cast<std::size_t>(m.nx) * static_cast<std::size_t>(m.ny);
+  if (rule == OffsetRule::kDisk) {
+    // Projection (2.3.2) is implicit: a cell's height is the top of all the part over it,
+    // so a layer is blocked under any material above it.
+    r.base = m.cell_top;
+    r.centre = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 0, 0), threads);
+    r.link_x = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 1, 0), threads);
+    r.link_y = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 0, 1), threads);
+    return r;
+  }
+  // Seed 003 Eq. (3.1) on the centre-ray voxels, projected by taking each ray's top.
+  r.base.resize(n);
+  for (int j = 0; j < m.ny; ++j) {
+    for (int i = 0; i < m.nx; ++i)
+      r.base[m.column(i, j)] = m.centre_top(i, j);
+  }
+  const double w = m.cell_mm, d = 2.0 * tool_radius_mm;
+  const int n0 = std::max(0, static_cast<int>(std::ceil((2.0 * allowance_mm + d - w) / (2.0 * w))));
+  std::vector<StencilRow> square;
+  for (int dy = -n0; dy <= n0; ++dy)
+    square.push_back({dy, -n0, n0});
+  r.centre = dilate(r.base, m.nx, m.ny, square, threads);
+  // The paper checks only the voxels the tool stands on.
+  r.link_x = dilate(r.centre, m.nx, m.ny, {{0, 0, 1}}, threads);
+  r.link_y = dilate(r.centre, m.nx, m.ny, {{0, 0, 0}, {1, 0, 0}}, threads);
+  return r;
+}
+
+double layer_threshold(const VoxelModel& m, const Reach& reach, int k) {
+  return m.layer_z(k) - reach.allowance_mm - kHeightEps;
+}
+
+std::vector<std::uint8_t> layer_flags(const VoxelModel& m, const Reach& reach, int k,
+                                      const std::vector<std::uint8_t>& stock) {
+  const double thr = layer_threshold(m, reach, k);
+  // A layer with no room for the tool (below the part's top everywhere) has no flags at
+  // all: most layers of a prismatic part are like that, and they need no memory.
+  bool any = false;
+  for (std::size_t c = 0; c < reach.centre.size() && !any; ++c) {
+    any = reach.centre[c] < thr && (stock.empty() || stock[c]);
+  }
+  if (!any) return {};
+  std::vector<std::uint8_t> f(reach.centre.size(), 0);
+  for (int j = 0; j < m.ny; ++j) {
+    for (int i = 0; i < m.nx; ++i) {
+      const std::size_t c = m.column(i, j);
+      if (stock.empty() || stock[c]) f[c] = kStock;
+      if (reach.centre[c] >= thr) continue;
+      f[c] |= kFree;
+      if (i + 1 < m.nx && reach.link_x[c] < thr && reach.centre[c + 1] < thr) f[c] |= kLinkX;
+      if (j + 1 < m.ny && reach.link_y[c] < thr &&
+          reach.centre[c + static_cast<std::size_t>(m.nx)] < thr) {
+        f[c] |= kLinkY;
+      }
+    }
+  }
+  return f;
+}
+
+bool straight_move_clear(const VoxelModel& m, const Reach& reach, int k, Vec2 p, Vec2 q) {
+  const double thr = layer_threshold(m, reach, k);
+  const double c = m.cell_mm;
+  auto cell_of = [&](double v, double o) {
+    return static_cast<int>(std::floor((v - o) / c + 0.5));
+  };
+  if (reach.rule == OffsetRule::kPaperSquare) {
+    // The paper's model: every cell the move passes over must be free.
+    const int steps = std::max(1, static_cast<int>(std::ceil(distance(p, q) / (0.25 * c))));
+    for (int s = 0; s <= steps; ++s) {
+      const Vec2 a = p + (q - p) * (static_cast<double>(s) / steps);
+      const int i = cell_of(a.x, m.origin.x), j = cell_of(a.y, m.origin.y);
+      if (i < 0 || j < 0 || i >= m.nx || j >= m.ny) return false;
+      if (reach.centre[m.column(i, j)] >= thr) return false;
+    }
+    return true;
+  }
+  // Rows the stadium touches; in each, the columns its x-extent can reach.
+  const double rad = reach.radius_mm;
+  const int j0 = std::max(0, cell_of(std::min(p.y, q.y) - rad, m.origin.y) - 1);
+  const int j1 = std::min(m.ny - 1, cell_of(std::max(p.y, q.y) + rad, m.origin.y) + 1);
+  for (int j = j0; j <= j1; ++j) {
+    const double yc = m.origin.y + j * c;
+    const double ylo = yc - 0.5 * c - rad, yhi = yc + 0.5 * c + rad;
+    // x-range of the segment within the band [ylo, yhi].
+    double xa, xb;
+    if (p.y == q.y) {
+      if (p.y < ylo || p.y > yhi) continue;
+      xa = std::min(p.x, q.x);
+      xb = std::max(p.x, q.x);
+    } else {
+      double t0 = (ylo - p.y) / (q.y - p.y), t1 = (yhi - p.y) / (q.y - p.y);
+      if (t0 > t1) std::swap(t0, t1);
+      t0 = std::max(t0, 0.0);
+      t1 = std::min(t1, 1.0);
+      if (t0 > t1) continue;
+      const double x0 = p.x + (q.x - p.x) * t0, x1 = p.x + (q.x - p.x) * t1;
+      xa = std::min(x0, x1);
+      xb = std::max(x0, x1);
+    }
+    const int i0 = std::max(0, cell_of(xa - rad, m.origin.x) - 1);
+    const int i1 = std::min(m.nx - 1, cell_of(xb + rad, m.origin.x) + 1);
+    for (int i = i0; i <= i1; ++i) {
+      if (reach.base[m.column(i, j)] < thr) continue;
+      const Vec2 ctr = m.centre(i, j);
+      const Vec2 h{0.5 * c, 0.5 * c};
+      if (segment_square_distance(p, q, ctr - h, ctr + h) < rad * (1.0 + 1e-12) + 1e-9) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace swarf::voxel_detail

@@ -1,0 +1,808 @@
+// Seed 003 end to end: voxels (2.2), offset and projection (2.3), regions and feed lines
+// (2.4.1-2.4.2), region sequencing (2.4.3) and the layered toolpath (2.6), with the
+// metrics of Tables 1-2 and the orientation study of 3.1.1.
+#include "swarf/voxel/rough.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "swarf/core/parallel.h"
+#include "voxel/machinable.h"
+#include "voxel/regions.h"
+
+namespace swarf {
+
+using voxel_detail::CellPath;
+using voxel_detail::Reach;
+
+std::string_view rough_sequence_name(RoughSequence s) {
+  switch (s) {
+    case RoughSequence::kZigzag:
+      return "zigzag";
+    case RoughSequence::kTrappedArea:
+      return "none";
+    case RoughSequence::kGa:
+      return "ga";
+  }
+  return "?";
+}
+
+Result<RoughSequence> parse_rough_sequence(std::string_view name) {
+  if (name == "zigzag") return RoughSequence::kZigzag;
+  if (name == "none" || name == "ta") return RoughSequence::kTrappedArea;
+  if (name == "ga") return RoughSequence::kGa;
+  return bad_parameter("unknown sequence '" + std::string(name) + "' (zigzag, none or ga)");
+}
+
+Status validate(const RoughParams& p) {
+  if (!(p.tool_diameter_mm > 0.0)) return bad_parameter("tool diameter must be > 0 mm");
+  if (!(p.stepover_mm > 0.0) || p.stepover_mm > p.tool_diameter_mm) {
+    return bad_parameter("stepover " + std::to_string(p.stepover_mm) +
+                         " mm must be in (0, tool diameter " + std::to_string(p.tool_diameter_mm) +
+                         " mm]: wider lines leave ridges");
+  }
+  if (!(p.stepdown_mm > 0.0)) return bad_parameter("stepdown must be > 0 mm");
+  if (!(p.stock_to_leave_mm >= 0.0)) return bad_parameter("stock to leave must be >= 0 mm");
+  if (!(p.margin_mm >= 0.0) || !(p.top_margin_mm >= 0.0)) {
+    return bad_parameter("stock margins must be >= 0 mm");
+  }
+  if (!(p.clearance_mm > 0.0)) return bad_parameter("clearance must be > 0 mm");
+  if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0)) {
+    return bad_parameter("feed rates must be > 0 mm/min");
+  }
+  if (!(p.lift_penalty_mm >= 0.0)) return bad_parameter("lift penalty must be >= 0 mm");
+  return validate(p.ga);
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Rapids stop this far above the layer they plunge into (the previous layer's floor is
+// clear there, or the stock top for the first layer).
+constexpr double kApproachMm = 1.0;
+// Cell visits the true-cost refinement may spend per layer (some 5 ms) and in all.
+constexpr double kDryRunCellBudget = 2e6;
+constexpr double kDryRunTotalBudget = 1.5e7;
+
+struct Layer {
+  int k = 0;
+  std::vector<std::uint8_t> flags;
+  std::vector<CellPath> regions;
+  std::size_t free_cells = 0;
+};
+
+// Search state shared by a builder and its dry-run copies (one thread).
+struct Scratch {
+  std::vector<int> dist;
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t gen = 0;
+  std::vector<std::size_t> queue;
+  std::vector<std::size_t> parent;
+  std::vector<std::vector<std::size_t>> buckets;
+};
+
+class Builder {
+ public:
+  Builder(const VoxelModel& m, const Reach& reach, const RoughParams& p, Toolpath& tp,
+          RoughMetrics& metrics, Scratch& scratch)
+      : m_(m), reach_(reach), p_(p), tp_(&tp), metrics_(&metrics), scratch_(&scratch) {
+    clear_z_ = m.stock.max.z + p.clearance_mm;
+  }
+
+  Vec2 at(voxel_detail::CellPoint c) const { return m_.centre(c.i, c.j); }
+
+  // Cells whose squares the segment passes over (sampled at a quarter cell).
+  template <class F>
+  bool all_cells_along(Vec2 p, Vec2 q, F&& ok) const {
+    const double c = m_.cell_mm;
+    const int steps = std::max(1, static_cast<int>(std::ceil(distance(p, q) / (0.25 * c))));
+    for (int s = 0; s <= steps; ++s) {
+      const Vec2 a = p + (q - p) * (static_cast<double>(s) / steps);
+      const int i = static_cast<int>(std::floor((a.x - m_.origin.x) / c + 0.5));
+      const int j = static_cast<int>(std::floor((a.y - m_.origin.y) / c + 0.5));
+      if (i < 0 || j < 0 || i >= m_.nx || j >= m_.ny || !ok(m_.column(i, j))) return false;
+    }
+    return true;
+  }
+
+  // A straight link at layer k's height may stay down when it keeps the tool off the part
+  // and passes only over cells that `ok` says hold no material any more.
+  template <class F>
+  bool link_clear(int k, Vec2 p, Vec2 q, F&& ok) const {
+    return all_cells_along(p, q, ok) && voxel_detail::straight_move_clear(m_, reach_, k, p, q);
+  }
+
+  // Cells on an axis-parallel (or diagonal) segment between two cell centres.
+  template <class F>
+  void for_cells(voxel_detail::CellPoint a, voxel_detail::CellPoint b, F&& f) const {
+    const int di = (b.i > a.i) - (b.i < a.i), dj = (b.j > a.j) - (b.j < a.j);
+    for (voxel_detail::CellPoint c = a;; c.i += di, c.j += dj) {
+      f(m_.column(c.i, c.j));
+      if (c == b) break;
+    }
+  }
+
+  std::size_t cell_at(Vec2 p) const {
+    const int i = static_cast<int>(std::floor((p.x - m_.origin.x) / m_.cell_mm + 0.5));
+    const int j = static_cast<int>(std::floor((p.y - m_.origin.y) / m_.cell_mm + 0.5));
+    return m_.column(std::clamp(i, 0, m_.nx - 1), std::clamp(j, 0, m_.ny - 1));
+  }
+
+  // Breadth-first search from `start` over cells where ok(c) holds, stepping only along the
+  // layer's safe x and y feeds. Steps to every cell, -1 where unreachable.
+  // Breadth-first search from `start` over cells where ok(c) holds, stepping only along the
+  // layer's safe x and y feeds; stops once every cell in `targets` is reached. Distances (in
+  // steps) are left in the shared scratch field, read with steps_to(); -1 = not reached.
+  // The field is reset by a generation stamp, not cleared: no allocation per search.
+  template <class F>
+  void bfs(const std::vector<std::uint8_t>& flags, std::size_t start, F&& ok,
+           const std::vector<std::size_t>& targets) const {
+    Scratch& sc = *scratch_;
+    if (sc.dist.size() != flags.size()) {
+      sc.dist.assign(flags.size(), 0);
+      sc.stamp.assign(flags.size(), 0);
+      sc.gen = 0;
+    }
+    ++sc.gen;
+    sc.queue.clear();
+    if (!ok(start)) return;
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    auto set = [&](std::size_t c, int d) {
+      sc.stamp[c] = sc.gen;
+      sc.dist[c] = d;
+      sc.queue.push_back(c);
+    };
+    set(start, 0);
+    std::size_t next_check = 64;
+    for (std::size_t h = 0; h < sc.queue.size(); ++h) {
+      if (h >= next_check) {
+        bool all = true;
+        for (std::size_t t : targets)
+          all = all && steps_to(t) >= 0;
+        if (all) break;
+        next_check = h * 2;
+      }
+      const std::size_t c = sc.queue[h];
+      const std::size_t i = c % nx;
+      const int dc = sc.dist[c];
+      auto visit = [&](std::size_t d) {
+        if (sc.stamp[d] != sc.gen && ok(d)) set(d, dc + 1);
+      };
+      if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
+      if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
+      if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
+      if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+    }
+  }
+  int steps_to(std::size_t c) const {
+    return scratch_->stamp[c] == scratch_->gen ? scratch_->dist[c] : -1;
+  }
+
+  // Shortest 4-connected path from `from` to `to` over cells where ok(c) holds, along the
+  // layer's safe feeds: A* with the Manhattan distance (exact for unit steps, so the
+  // search stays near the straight line instead of flooding the layer), bucket queue.
+  template <class F>
+  bool astar(const std::vector<std::uint8_t>& flags, std::size_t from, std::size_t to, F&& ok,
+             std::vector<std::size_t>& cells) const {
+    Scratch& sc = *scratch_;
+    if (sc.dist.size() != flags.size()) {
+      sc.dist.assign(flags.size(), 0);
+      sc.stamp.assign(flags.size(), 0);
+      sc.gen = 0;
+    }
+    sc.parent.resize(flags.size());
+    ++sc.gen;
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    const long ti = static_cast<long>(to % nx), tj = static_cast<long>(to / nx);
+    auto h = [&](std::size_t c) {
+      return static_cast<std::size_t>(std::labs(static_cast<long>(c % nx) - ti) +
+                                      std::labs(static_cast<long>(c / nx) - tj));
+    };
+    for (auto& b : sc.buckets)
+      b.clear();
+    auto push = [&](std::size_t c, int g) {
+      sc.stamp[c] = sc.gen;
+      sc.dist[c] = g;
+      const std::size_t f = static_cast<std::size_t>(g) + h(c);
+      if (f >= sc.buckets.size()) sc.buckets.resize(f + 1);
+      sc.buckets[f].push_back(c);
+    };
+    sc.parent[from] = from;
+    push(from, 0);
+    for (std::size_t f = h(from); f < sc.buckets.size(); ++f) {
+      // Last in, first out within a bucket: among equal f the deepest g first, which
+      // breaks the many ties of the Manhattan metric towards the target.
+      while (!sc.buckets[f].empty()) {
+        const std::size_t c = sc.buckets[f].back();
+        sc.buckets[f].pop_back();
+        if (static_cast<std::size_t>(sc.dist[c]) + h(c) != f) continue;  // stale entry
+        if (c == to) {
+          cells.clear();
+          for (std::size_t x = to; x != from; x = sc.parent[x])
+            cells.push_back(x);
+          cells.push_back(from);
+          std::reverse(cells.begin(), cells.end());
+          return true;
+        }
+        const int g = sc.dist[c] + 1;
+        auto visit = [&](std::size_t d) {
+          if ((sc.stamp[d] != sc.gen || g < sc.dist[d]) && ok(d)) {
+            sc.parent[d] = c;
+            push(d, g);
+          }
+        };
+        const std::size_t i = c % nx;
+        if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
+        if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
+        if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
+        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+      }
+    }
+    return false;
+  }
+
+  // A link that stays down on the way from p to q through cells where ok(c) holds: the
+  // shortest cell path, then pulled straight wherever a straight move is clear. Empty when
+  // there is none. Returns the points after p, ending at q.
+  template <class F>
+  std::vector<Vec2> route(int k, const std::vector<std::uint8_t>& flags, Vec2 p, Vec2 q,
+                          F&& ok) const {
+    const std::size_t from = cell_at(p), to = cell_at(q);
+    // The target itself is where the next cut starts: it may still hold material.
+    auto passable = [&](std::size_t c) { return c == to || c == from || ok(c); };
+    std::vector<std::size_t> cells;
+    if (!astar(flags, from, to, passable, cells)) return {};
+    const auto nx = static_cast<std::size_t>(m_.nx);
+    auto centre = [&](std::size_t c) {
+      return m_.centre(static_cast<int>(c % nx), static_cast<int>(c / nx));
+    };
+    // Pull the path straight: from each anchor, the farthest cell a clear straight move
+    // reaches, found by galloping then bisection (O(log n) tests instead of O(n)).
+    std::vector<Vec2> out;
+    std::size_t a = 0;
+    const std::size_t last = cells.size() - 1;
+    auto clear_to = [&](std::size_t b) {
+      return link_clear(k, centre(cells[a]), centre(cells[b]), passable);
+    };
+    while (a < last) {
+      std::size_t good = a + 1, step = 1;
+      while (good < last) {
+        const std::size_t probe = std::min(last, good + step);
+        if (!clear_to(probe)) {
+          std::size_t lo = good, hi = probe;  // clear at lo, not at hi
+          while (hi - lo > 1) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            (clear_to(mid) ? lo : hi) = mid;
+          }
+          good = lo;
+          break;
+        }
+        good = probe;
+        step *= 2;
+      }
+      out.push_back(centre(cells[good]));
+      a = good;
+    }
+    return out;
+  }
+
+  bool routing() const { return p_.sequence != RoughSequence::kZigzag; }
+
+  static double polyline_length(Vec2 p, const std::vector<Vec2>& pts) {
+    double len = 0.0;
+    for (const Vec2& q : pts) {
+      len += distance(p, q);
+      p = q;
+    }
+    return len;
+  }
+
+  double lift_cost(int k, Vec2 p, Vec2 q) const {
+    return 2.0 * (clear_z_ - m_.layer_z(k)) + distance(p, q) + p_.lift_penalty_mm;
+  }
+
+  // Seed 003 2.4.3: the sequence of this layer's regions.
+  // Seed 003 2.4.3 with one of two models of the links, neither exact (which cells are cut
+  // when a link is used depends on the order): optimistic = every machinable cell of the
+  // layer is cut already; pessimistic = only the region just finished (and the region
+  // ends). The emitter then checks the real state.
+  TwoEndsInstance link_costs(const Layer& L, bool pessimistic) const {
+    const int n = static_cast<int>(L.regions.size());
+    std::vector<Vec2> ends(static_cast<std::size_t>(2 * n));
+    for (int r = 0; r < n; ++r) {
+      ends[static_cast<std::size_t>(2 * r)] =
+          at(L.regions[static_cast<std::size_t>(r)].pts.front());
+      ends[static_cast<std::size_t>(2 * r + 1)] =
+          at(L.regions[static_cast<std::size_t>(r)].pts.back());
+    }
+    std::vector<int> owner;
+    if (pessimistic) {
+      owner.assign(L.flags.size(), -1);
+      for (int r = 0; r < n; ++r) {
+        const CellPath& path = L.regions[static_cast<std::size_t>(r)];
+        for (std::size_t t = 0; t + 1 < path.pts.size(); ++t) {
+          for_cells(path.pts[t], path.pts[t + 1], [&](std::size_t c) { owner[c] = r; });
+        }
+        if (path.pts.size() == 1) owner[m_.column(path.pts[0].i, path.pts[0].j)] = r;
+      }
+      for (const Vec2& e : ends)
+        owner[cell_at(e)] = n;  // ends are passable for all
+    }
+    auto free_now = [&](std::size_t c) { return (L.flags[c] & voxel_detail::kFree) != 0; };
+    // Where the straight link is blocked, the tool may still stay down along a path through
+    // cut cells (its 4-connected length bounds the pulled route).
+    std::vector<std::size_t> end_cells;
+    for (const Vec2& e : ends)
+      end_cells.push_back(cell_at(e));
+    // steps[a * 2n + b]: 4-connected steps from end a to end b, -1 when not connected.
+    std::vector<int> steps(ends.size() * ends.size(), -1);
+    for (std::size_t a = 0; a < ends.size(); ++a) {
+      const int ra = static_cast<int>(a / 2);
+      if (pessimistic) {
+        bfs(
+            L.flags, end_cells[a], [&](std::size_t c) { return owner[c] == ra || owner[c] == n; },
+            end_cells);
+      } else {
+        bfs(L.flags, end_cells[a], free_now, end_cells);
+      }
+      for (std::size_t b = 0; b < ends.size(); ++b)
+        steps[a * ends.size() + b] = steps_to(end_cells[b]);
+    }
+    std::vector<double> cost(static_cast<std::size_t>(4 * n * n), 0.0);
+    for (int a = 0; a < 2 * n; ++a) {
+      for (int b = a + 1; b < 2 * n; ++b) {
+        if (a / 2 == b / 2) continue;
+        const Vec2 pa = ends[static_cast<std::size_t>(a)], pb = ends[static_cast<std::size_t>(b)];
+        double c = distance(pa, pb);
+        const int ra = a / 2;
+        const bool straight =
+            pessimistic ? link_clear(L.k, pa, pb,
+                                     [&](std::size_t q) { return owner[q] == ra || owner[q] == n; })
+                        : link_clear(L.k, pa, pb, free_now);
+        if (!straight) {
+          c = lift_cost(L.k, pa, pb);
+          const int st =
+              steps[static_cast<std::size_t>(a) * ends.size() + static_cast<std::size_t>(b)];
+          if (st >= 0) c = std::min(c, st * m_.cell_mm);
+        }
+        cost[static_cast<std::size_t>(a * 2 * n + b)] = c;
+        cost[static_cast<std::size_t>(b * 2 * n + a)] = c;
+      }
+    }
+    TwoEndsInstance in;
+    in.regions = n;
+    in.cost = std::move(cost);
+    return in;
+  }
+
+  // The GA on an instance, with start costs from where the tool is now.
+  TwoEndsTour solve(const Layer& L, TwoEndsInstance& in) const {
+    in.start_cost.clear();
+    if (has_pos_) {
+      for (int q = 0; q < 2 * in.regions; ++q) {
+        const CellPath& path = L.regions[static_cast<std::size_t>(q / 2)];
+        const Vec2 e = at(q % 2 == 0 ? path.pts.front() : path.pts.back());
+        in.start_cost.push_back(layer_change_clear(e) ? distance(pos_, e)
+                                                      : lift_cost(L.k, pos_, e));
+      }
+    }
+    SequenceOptions opt = p_.ga;
+    opt.seed = p_.ga.seed + static_cast<std::uint64_t>(L.k) * 0x9e3779b97f4a7c15ULL;
+    auto solved = solve_two_ends_ga(in, opt);
+    if (solved.ok()) return std::move(solved).value();
+    TwoEndsTour tour;
+    for (int r = 0; r < in.regions; ++r)
+      tour.order.push_back(r);
+    tour.flipped.assign(static_cast<std::size_t>(in.regions), 0);
+    return tour;
+  }
+
+  // From the end of the previous layer at its height, straight over to q, then down.
+  bool layer_change_clear(Vec2 q) const {
+    const std::vector<std::uint8_t>& prev = prev_flags_;
+    return link_clear(prev_k_, pos_, q,
+                      [&](std::size_t c) { return (prev[c] & voxel_detail::kFree) != 0; });
+  }
+
+  void emit_layer(const Layer& L) {
+    TwoEndsTour tour;
+    for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
+      tour.order.push_back(r);
+    tour.flipped.assign(L.regions.size(), 0);
+    if (p_.sequence == RoughSequence::kGa && L.regions.size() >= 2) {
+      // The GA's link costs cannot know which cells are cut when a link is used (that
+      // depends on the order). So several orders - the GA's under an optimistic and under a
+      // pessimistic link model, the Trapped Area discovery order, and for a layer with the
+      // same cells as the last one planned its order both ways round - are refined on the
+      // true cost (dry runs of the emitter: air path plus lift penalties) and the best is
+      // emitted: sequencing never makes a layer worse than the discovery order. Link costs
+      // cost O(cells x regions) to find, so a layer with the same cells reuses them.
+      const bool same = L.flags == plan_flags_;
+      if (!same) {
+        plan_flags_ = L.flags;
+        plan_optimistic_ = link_costs(L, false);
+        plan_pessimistic_ = link_costs(L, true);
+      }
+      std::vector<TwoEndsTour> candidates{solve(L, plan_optimistic_), solve(L, plan_pessimistic_),
+                                          tour};
+      if (same) {
+        TwoEndsTour back = plan_tour_;
+        std::reverse(back.order.begin(), back.order.end());
+        for (auto& f : back.flipped)
+          f ^= 1;
+        candidates.push_back(plan_tour_);
+        candidates.push_back(std::move(back));
+      }
+      double best = std::numeric_limits<double>::infinity();
+      dry_run_budget_ = std::min(kDryRunCellBudget, total_budget_);
+      for (TwoEndsTour& cand : candidates) {
+        const double c = refine(L, cand, dry_run(L, cand));
+        if (c < best) {
+          best = c;
+          tour = cand;
+        }
+      }
+      total_budget_ -= std::min(kDryRunCellBudget, total_budget_) - dry_run_budget_;
+      plan_tour_ = tour;
+    }
+    emit_tour(L, tour);
+    prev_flags_ = L.flags;
+    prev_k_ = L.k;
+  }
+
+  // Or-opt on the true cost: move one region elsewhere in the order, either way round,
+  // while a dry run says it helps. A dry run costs about (cells x regions) of the layer;
+  // each layer may spend kDryRunCellBudget on them, the whole run kDryRunTotalBudget.
+  double refine(const Layer& L, TwoEndsTour& tour, double best) {
+    const std::size_t n = tour.order.size();
+    const double per_run = static_cast<double>(L.flags.size()) * static_cast<double>(n);
+    bool improved = true;
+    auto affordable = [&] { return dry_run_budget_ >= per_run; };
+    while (improved && affordable()) {
+      improved = false;
+      for (std::size_t i = 0; i < n && !improved && affordable(); ++i) {
+        for (std::size_t k = 0; k < n && !improved && affordable(); ++k) {
+          for (int flip = 0; flip < 2 && !improved && affordable(); ++flip) {
+            if (k == i && flip == 0) continue;
+            TwoEndsTour cand = tour;
+            const int r = cand.order[i];
+            cand.order.erase(cand.order.begin() + static_cast<std::ptrdiff_t>(i));
+            cand.order.insert(cand.order.begin() + static_cast<std::ptrdiff_t>(k), r);
+            if (flip) cand.flipped[static_cast<std::size_t>(r)] ^= 1;
+            dry_run_budget_ -= per_run;
+            const double c = dry_run(L, cand);
+            if (c < best - 1e-9) {
+              best = c;
+              tour = std::move(cand);
+              improved = true;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+  // Air path plus lift penalties of emitting this layer with `tour`, without emitting it.
+  double dry_run(const Layer& L, const TwoEndsTour& tour) const {
+    Builder sim = *this;
+    Toolpath scratch;
+    RoughMetrics sm;
+    sim.tp_ = &scratch;
+    sim.metrics_ = &sm;
+    sim.air_ = 0.0;
+    sim.emit_tour(L, tour);
+    return sim.air_ + static_cast<double>(sm.lift_offs) * p_.lift_penalty_mm;
+  }
+
+  void emit_tour(const Layer& L, const TwoEndsTour& tour) {
+    // Cells without stock hold nothing to cut: links may cross them from the start.
+    cleared_.resize(L.flags.size());
+    for (std::size_t c = 0; c < L.flags.size(); ++c) {
+      cleared_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
+    }
+    for (int r : tour.order) {
+      const CellPath& path = L.regions[static_cast<std::size_t>(r)];
+      const bool rev = tour.flipped[static_cast<std::size_t>(r)] != 0;
+      const std::size_t n = path.pts.size();
+      auto pt = [&](std::size_t t) { return path.pts[rev ? n - 1 - t : t]; };
+      auto cut = [&](std::size_t s) { return path.cutting[rev ? n - 2 - s : s] != 0; };
+      go_to(L, at(pt(0)));
+      mark(pt(0), pt(0));
+      for (std::size_t s = 0; s + 1 < n; ++s) {
+        feed(to_vec3(at(pt(s + 1)), m_.layer_z(L.k)), p_.feed_mm_min, cut(s));
+        mark(pt(s), pt(s + 1));
+      }
+      pos_ = at(pt(n - 1));
+    }
+  }
+
+  void finish() {
+    if (has_pos_) rapid(to_vec3(pos_, clear_z_));
+  }
+
+ private:
+  void go_to(const Layer& L, Vec2 q) {
+    const double z = m_.layer_z(L.k);
+    const bool same_layer = started_layer_ == L.k;
+    started_layer_ = L.k;
+    if (same_layer) {
+      // Stay down only over cells already cut in this layer (2.4.3 links are air moves).
+      // The cell where the next cut starts may hold material: the link ends there.
+      const std::size_t target = cell_at(q);
+      auto cut = [&](std::size_t c) { return cleared_[c] != 0 || c == target; };
+      if (link_clear(L.k, pos_, q, cut)) {
+        feed(to_vec3(q, z), p_.feed_mm_min, false);
+        return;
+      }
+      // Not straight: around the obstacle through what this layer has cut, when that is
+      // cheaper than going up and over (not for the plain zig-zag baseline, which links
+      // straight or lifts, as a CAM system without segmentation does).
+      const std::vector<Vec2> way =
+          routing() ? route(L.k, L.flags, pos_, q, cut) : std::vector<Vec2>{};
+      if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
+        for (const Vec2& w : way)
+          feed(to_vec3(w, z), p_.feed_mm_min, false);
+        return;
+      }
+    } else if (has_pos_) {
+      const double zp = m_.layer_z(prev_k_);
+      if (layer_change_clear(q)) {
+        feed(to_vec3(q, zp), p_.feed_mm_min, false);
+        plunge(z);
+        return;
+      }
+      const std::vector<Vec2> way =
+          routing()
+              ? route(prev_k_, prev_flags_, pos_, q,
+                      [&](std::size_t c) { return (prev_flags_[c] & voxel_detail::kFree) != 0; })
+              : std::vector<Vec2>{};
+      if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
+        for (const Vec2& w : way)
+          feed(to_vec3(w, zp), p_.feed_mm_min, false);
+        plunge(z);
+        return;
+      }
+    }
+    if (has_pos_) {
+      rapid(to_vec3(pos_, clear_z_));
+      ++metrics_->lift_offs;
+    }
+    rapid(to_vec3(q, clear_z_));
+    rapid(to_vec3(q, m_.layer_top(L.k) + kApproachMm));
+    plunge(z);
+  }
+
+  void mark(voxel_detail::CellPoint a, voxel_detail::CellPoint b) {
+    for_cells(a, b, [&](std::size_t c) { cleared_[c] = 1; });
+  }
+
+  static Move make(MoveKind kind, Vec3 end, double feed, bool cutting) {
+    Move mv;
+    mv.kind = kind;
+    mv.end = end;
+    mv.feed_mm_min = feed;
+    mv.cutting = cutting;
+    return mv;
+  }
+  void rapid(Vec3 p) { add(make(MoveKind::kRapid, p, 0.0, false)); }
+  void feed(Vec3 p, double f, bool cutting) { add(make(MoveKind::kFeed, p, f, cutting)); }
+  void plunge(double z) {
+    add(make(MoveKind::kPlunge, to_vec3(pos_, z), p_.plunge_feed_mm_min, true));
+  }
+  void add(Move mv) {
+    if (has_last_ && mv.end == last_) return;
+    if (has_last_ && (mv.kind == MoveKind::kRapid || !mv.cutting)) air_ += distance(last_, mv.end);
+    tp_->moves.push_back(mv);
+    last_ = mv.end;
+    has_last_ = true;
+    pos_ = mv.end.xy();
+    has_pos_ = true;
+  }
+
+  const VoxelModel& m_;
+  const Reach& reach_;
+  const RoughParams& p_;
+  Toolpath* tp_;
+  RoughMetrics* metrics_;
+  Scratch* scratch_;
+  double air_ = 0.0;  // air length emitted so far (what the candidates are compared by)
+  double dry_run_budget_ = kDryRunCellBudget;
+  double total_budget_ = kDryRunTotalBudget;
+  std::vector<std::uint8_t> plan_flags_;                // the last layer planned from scratch...
+  TwoEndsTour plan_tour_;                               // ...and the order it got
+  TwoEndsInstance plan_optimistic_, plan_pessimistic_;  // its link costs
+  double clear_z_ = 0.0;
+  Vec2 pos_;
+  bool has_pos_ = false;
+  Vec3 last_;
+  bool has_last_ = false;
+  int prev_k_ = -1, started_layer_ = -1;
+  std::vector<std::uint8_t> prev_flags_, cleared_;
+};
+
+void measure(const Toolpath& tp, RoughMetrics& m) {
+  Vec3 at;
+  for (std::size_t i = 0; i < tp.moves.size(); ++i) {
+    const Move& mv = tp.moves[i];
+    if (i > 0) {  // the first move starts at the machine's unknown position
+      const double len = distance(at, mv.end);
+      m.total_length_mm += len;
+      if (mv.kind == MoveKind::kRapid || !mv.cutting) {
+        m.air_length_mm += len;
+      } else {
+        m.cutting_length_mm += len;
+      }
+    }
+    at = mv.end;
+  }
+}
+
+// Cells whose square meets the convex stock outline (empty outline: every cell).
+std::vector<std::uint8_t> stock_mask(const VoxelModel& m, const std::vector<Vec2>& outline) {
+  if (outline.empty()) return {};
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(m.nx) * static_cast<std::size_t>(m.ny));
+  const double h = 0.5 * m.cell_mm;
+  for (int j = 0; j < m.ny; ++j) {
+    for (int i = 0; i < m.nx; ++i) {
+      const Vec2 c = m.centre(i, j);
+      const Vec2 corners[4] = {c + Vec2{-h, -h}, c + Vec2{h, -h}, c + Vec2{h, h}, c + Vec2{-h, h}};
+      // Separating axes: the outline's edge normals (the square's axes are covered by the
+      // grid spanning the outline's box).
+      bool meets = true;
+      for (std::size_t e = 0; e < outline.size() && meets; ++e) {
+        const Vec2 a = outline[e], b = outline[(e + 1) % outline.size()];
+        bool all_outside = true;
+        for (const Vec2& q : corners)
+          all_outside = all_outside && cross(b - a, q - a) < 0.0;
+        if (all_outside) meets = false;
+      }
+      mask[m.column(i, j)] = meets ? 1 : 0;
+    }
+  }
+  return mask;
+}
+
+}  // namespace
+
+Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(validate(p));
+  const auto t0 = Clock::now();
+  RoughResult res;
+  res.rotation_deg = p.zigzag_angle_deg;
+  VoxelizeOptions vo;
+  vo.cell_mm = p.stepover_mm;
+  vo.layer_mm = p.stepdown_mm;
+  vo.stock = p.stock;
+  vo.margin_mm = p.margin_mm;
+  vo.top_margin_mm = p.top_margin_mm;
+  vo.repair_open = p.repair_open_mesh;
+  // Seed 003 3.1.1 without re-clamping the part: part and stock are turned by -angle so
+  // that the grid's x axis runs along the wanted feed direction, and the toolpath is turned
+  // back at the end. Cells outside the turned stock hold nothing to cut.
+  const double angle = p.zigzag_angle_deg;
+  Mesh turned;
+  std::vector<Vec2> outline;
+  if (angle != 0.0) {
+    Box3 stock = p.stock;
+    if (stock.empty()) {
+      for (const Vec3& v : part.vertices)
+        stock.add(v);
+      stock = Box3{
+          {stock.min.x - p.margin_mm, stock.min.y - p.margin_mm, stock.min.z},
+          {stock.max.x + p.margin_mm, stock.max.y + p.margin_mm, stock.max.z + p.top_margin_mm}};
+    }
+    turned = rotate_about_z(part, -angle);
+    Box3 grid = stock;
+    grid.min.x = grid.min.y = std::numeric_limits<double>::infinity();
+    grid.max.x = grid.max.y = -std::numeric_limits<double>::infinity();
+    for (Vec2 c : {stock.min.xy(), Vec2{stock.max.x, stock.min.y}, stock.max.xy(),
+                   Vec2{stock.min.x, stock.max.y}}) {
+      outline.push_back(rotated(c, deg_to_rad(-angle)));
+      grid.min.x = std::min(grid.min.x, outline.back().x);
+      grid.min.y = std::min(grid.min.y, outline.back().y);
+      grid.max.x = std::max(grid.max.x, outline.back().x);
+      grid.max.y = std::max(grid.max.y, outline.back().y);
+    }
+    vo.stock = grid;
+  }
+  auto vox = voxelize(angle != 0.0 ? turned : part, vo, ctx);
+  if (!vox.ok()) return vox.status();
+  const VoxelModel& m = *vox;
+  res.warnings = m.warnings;
+  res.timings.voxelize_s = seconds_since(t0);
+  ctx.report("rough: voxelized", 0.2);
+
+  auto t1 = Clock::now();
+  const Reach reach = voxel_detail::compute_reach(m, 0.5 * p.tool_diameter_mm, p.stock_to_leave_mm,
+                                                  p.offset, ctx.threads);
+  const std::vector<std::uint8_t> stock_cells = stock_mask(m, outline);
+  std::vector<Layer> layers(static_cast<std::size_t>(m.layers));
+  parallel_for(layers.size(), ctx.threads, [&](std::size_t k) {
+    layers[k].k = static_cast<int>(k);
+    layers[k].flags = voxel_detail::layer_flags(m, reach, static_cast<int>(k), stock_cells);
+  });
+  res.timings.preprocess_s = seconds_since(t1);
+  if (ctx.cancelled()) return Status{Error::kCancelled, "rough: cancelled"};
+
+  t1 = Clock::now();
+  parallel_for(layers.size(), ctx.threads, [&](std::size_t k) {
+    Layer& L = layers[k];
+    if (L.flags.empty()) return;  // no room for the tool in this layer
+    constexpr std::uint8_t kCut = voxel_detail::kFree | voxel_detail::kStock;
+    for (std::uint8_t f : L.flags)
+      L.free_cells += (f & kCut) == kCut ? 1 : 0;
+    L.regions = p.sequence == RoughSequence::kZigzag
+                    ? voxel_detail::zigzag_runs(L.flags, m.nx, m.ny)
+                    : voxel_detail::trapped_area_regions(L.flags, m.nx, m.ny);
+  });
+  res.timings.segment_s = seconds_since(t1);
+  ctx.report("rough: segmented", 0.5);
+
+  t1 = Clock::now();
+  Toolpath& tp = res.toolpath;
+  tp.name = "rough";
+  tp.tool_diameter_mm = p.tool_diameter_mm;
+  char desc[64];
+  std::snprintf(desc, sizeof desc, "D%g flat end mill", p.tool_diameter_mm);
+  tp.tool_description = desc;
+  tp.clearance_z_mm = m.stock.max.z + p.clearance_mm;
+  Scratch scratch;
+  Builder b(m, reach, p, tp, res.metrics, scratch);
+  for (const Layer& L : layers) {
+    if (ctx.cancelled()) return Status{Error::kCancelled, "rough: cancelled"};
+    if (L.regions.empty()) continue;
+    ++res.metrics.layers;
+    res.metrics.regions += L.regions.size();
+    res.metrics.machinable_cells += L.free_cells;
+    b.emit_layer(L);
+  }
+  b.finish();
+  res.timings.sequence_s = seconds_since(t1);
+  if (tp.moves.empty()) {
+    return Status{Error::kEmptyResult,
+                  "rough: no layer has room for the tool (stock too small for the tool "
+                  "plus the allowance?)"};
+  }
+  if (angle != 0.0) {
+    for (Move& mv : tp.moves)
+      mv.end = to_vec3(rotated(mv.end.xy(), deg_to_rad(angle)), mv.end.z);
+  }
+  measure(tp, res.metrics);
+  res.timings.total_s = seconds_since(t0);
+  return res;
+}
+
+Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams& p,
+                                             const std::vector<double>& angles_deg,
+                                             const Context& ctx) {
+  if (angles_deg.empty()) return bad_parameter("orientation study: no angle given");
+  OrientationResult out;
+  for (double a : angles_deg) {
+    if (!std::isfinite(a)) return bad_parameter("orientation study: angle is not finite");
+    RoughParams q = p;
+    q.zigzag_angle_deg = a;
+    auto r = rough(part, q, ctx);
+    if (!r.ok()) return r.status().with_context("feed angle " + std::to_string(a) + " deg");
+    out.angles_deg.push_back(a);
+    out.metrics.push_back(r->metrics);
+    const bool better = out.metrics.size() == 1 ||
+                        r->metrics.total_length_mm < out.metrics[out.best].total_length_mm;
+    if (better) {
+      out.best = out.metrics.size() - 1;
+      out.best_result = std::move(r).value();
+    }
+  }
+  return out;
+}
+
+}  // namespace swarf

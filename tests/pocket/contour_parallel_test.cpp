@@ -1,0 +1,43 @@
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "pocket/sweep_checker.h"
+#include "swarf/pocket/contour_parallel.h"
+
+namespace swarf {
+namespace {
+
+TEST(ContourParallel, LWithIslandsHasNoGougeAndLeavesOnlyUnreachableMaterial) {
+  auto p = make_pocket(
+      {{0, 0}, {60, 0}, {60, 24}, {30, 24}, {30, 48}, {0, 48}},
+      {{{42, 7}, {48, 7}, {48, 17}, {42, 17}}, {{12, 30}, {18, 30}, {18, 36}, {12, 36}}},
+      "L 60x48");
+  ASSERT_TRUE(p.ok());
+  Tool t;
+  t.diameter_mm = 6.0;
+  ContourParallelParams cp;
+  cp.stepover_mm = 0.6;
+  cp.depth_mm = 3.0;
+  auto r = contour_parallel_pocket(*p, t, cp);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  const auto s = testing::sweep_check(p->region, 3.0, r->toolpath, 36.87, 0.05, 0.2);
+  std::printf(
+      "  contour L: gouge %.3f mm, residual %.2f mm2, rings %d, retracts %d, max eng %.0f\n",
+      s.max_gouge_mm, s.residual_mm2, r->rings, r->retracts_per_layer, s.max_engagement_deg);
+  // Offsets are exact polygons: any gouge is the checker's pixel at most.
+  EXPECT_LE(s.max_gouge_mm, 0.05);
+  EXPECT_LE(s.residual_mm2, 0.5);
+}
+
+TEST(ContourParallel, ToolTooLarge) {
+  auto p = make_pocket({{0, 0}, {5, 0}, {5, 5}, {0, 5}}, {}, "small");
+  Tool t;
+  t.diameter_mm = 6.0;
+  auto r = contour_parallel_pocket(*p, t, ContourParallelParams{});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), Error::kToolTooLarge);
+}
+
+}  // namespace
+}  // namespace swarf

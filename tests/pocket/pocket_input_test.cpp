@@ -1,0 +1,118 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pocket/geometry.h"
+#include "swarf/pocket/pocket_input.h"
+
+namespace swarf {
+namespace {
+
+double region_area(const Pocket& p) {
+  double a = 0.0;
+  for (const Ring& r : p.region.rings)
+    a += pocket::ring_area(r);
+  return a;
+}
+
+TEST(PocketInput, JsonSquareWithIslandIsOrientedAndHasTheRightArea) {
+  // Outer given clockwise, island counter-clockwise: both must be turned around.
+  auto p = parse_pocket_json(
+      R"({"outer": [[0,0],[0,10],[10,10],[10,0]], "islands": [[[2,2],[4,2],[4,4],[2,4]]]})",
+      "sq.json");
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  ASSERT_EQ(p->region.rings.size(), 2u);
+  EXPECT_GT(pocket::ring_area(p->region.rings[0]), 0.0);
+  EXPECT_LT(pocket::ring_area(p->region.rings[1]), 0.0);
+  EXPECT_NEAR(region_area(*p), 100.0 - 4.0, 1e-12);
+}
+
+TEST(PocketInput, SelfIntersectingOutlineIsRejectedWithThePlace) {
+  auto p = parse_pocket_json(R"({"outer": [[0,0],[10,10],[10,0],[0,10]]})", "bow.json");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.status().code(), Error::kBadInput);
+  EXPECT_NE(p.status().message().find("bow.json"), std::string::npos);
+  EXPECT_NE(p.status().message().find("intersects itself"), std::string::npos);
+  EXPECT_NE(p.status().message().find("(5, 5)"), std::string::npos) << p.status().message();
+}
+
+TEST(PocketInput, IslandCrossingOrOutsideTheOuterIsRejected) {
+  auto a = parse_pocket_json(
+      R"({"outer": [[0,0],[10,0],[10,10],[0,10]], "islands": [[[8,2],[12,2],[12,4],[8,4]]]})",
+      "x.json");
+  ASSERT_FALSE(a.ok());
+  EXPECT_NE(a.status().message().find("crosses"), std::string::npos);
+  auto b = parse_pocket_json(
+      R"({"outer": [[0,0],[10,0],[10,10],[0,10]], "islands": [[[20,2],[22,2],[22,4]]]})", "y.json");
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.status().message().find("outside"), std::string::npos);
+  EXPECT_FALSE(parse_pocket_json("{\"outer\": [[0,0],[1,1]]}", "z.json").ok());
+  EXPECT_FALSE(parse_pocket_json("not json", "z.json").ok());
+}
+
+TEST(PocketInput, SvgPathWithRelativeArcsMakesACircleOfTheRightArea) {
+  // A ring of two half circles, radius 20, with a square hole given as an absolute polygon.
+  const char* svg = R"(<svg xmlns="http://www.w3.org/2000/svg">
+    <path d="M 0 0 a20,20 0 1,0 40,0 a 20 20 0 1 0 -40 0 z"/>
+    <polygon points="15,-5 25,-5 25,5 15,5"/></svg>)";
+  auto p = parse_pocket_svg(svg, "c.svg", {.arc_tolerance_mm = 0.001});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  ASSERT_EQ(p->island_count(), 1u);
+  EXPECT_NEAR(region_area(*p), kPi * 400.0 - 100.0, kPi * 400.0 * 2e-4);
+}
+
+TEST(PocketInput, SvgHVAndRelativeLinesAndOpenPolylines) {
+  auto p = parse_pocket_svg(R"(<svg><path d="m10 10 h30 v-20 l-30,0 Z"/></svg>)", "r.svg");
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  EXPECT_NEAR(region_area(*p), 600.0, 1e-9);
+  auto open = parse_pocket_svg(R"(<svg><polyline points="0,0 10,0 10,10"/></svg>)", "o.svg");
+  ASSERT_FALSE(open.ok());
+  EXPECT_NE(open.status().message().find("o.svg:1"), std::string::npos);
+  EXPECT_NE(open.status().message().find("open"), std::string::npos);
+  EXPECT_FALSE(parse_pocket_svg(R"(<svg><path d="M0 0 L10 0 L10 10"/></svg>)", "p.svg").ok());
+  EXPECT_FALSE(parse_pocket_svg(R"(<svg><path d="M0 0 C1 1 2 2 3 3 Z"/></svg>)", "q.svg").ok());
+}
+
+std::string dxf(const std::string& entities) {
+  return "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n";
+}
+
+TEST(PocketInput, DxfLinesAndArcChainIntoASlotShape) {
+  // A stadium: two lines and two half-circle arcs of radius 5, written in scrambled order
+  // and directions, chained into one loop. Area = 20*10 + pi*25.
+  const std::string e =
+      "0\nLINE\n8\n0\n10\n0\n20\n-5\n11\n20\n21\n-5\n"
+      "0\nLINE\n8\n0\n10\n0\n20\n5\n11\n20\n21\n5\n"
+      "0\nARC\n8\n0\n10\n20\n20\n0\n40\n5\n50\n270\n51\n90\n"
+      "0\nARC\n8\n0\n10\n0\n20\n0\n40\n5\n50\n90\n51\n270\n";
+  auto p = parse_pocket_dxf(dxf(e), "s.dxf", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  // Chords inside the arc lose at most tolerance x arc length of area.
+  EXPECT_NEAR(region_area(*p), 200.0 + kPi * 25.0, 0.0005 * 2.0 * kPi * 5.0);
+}
+
+TEST(PocketInput, DxfLwpolylineBulgeAndCircleIsland) {
+  // Closed LWPOLYLINE: square 0..20 whose top edge bulges out by a half circle (bulge 1),
+  // and a circle island of radius 2.
+  const std::string e =
+      "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n0\n20\n0\n10\n20\n20\n0\n10\n20\n20\n20\n42\n1\n"
+      "10\n0\n20\n20\n"
+      "0\nCIRCLE\n10\n10\n20\n10\n40\n2\n";
+  auto p = parse_pocket_dxf(dxf(e), "b.dxf", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  EXPECT_EQ(p->island_count(), 1u);
+  EXPECT_NEAR(region_area(*p), 400.0 + kPi * 50.0 - kPi * 4.0, 0.02);
+}
+
+TEST(PocketInput, DxfOpenChainIsRejectedWithItsEnds) {
+  const std::string e =
+      "0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nLINE\n10\n10\n20\n0\n11\n10\n21\n10\n";
+  auto p = parse_pocket_dxf(dxf(e), "open.dxf");
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.status().code(), Error::kBadInput);
+  EXPECT_NE(p.status().message().find("open outline"), std::string::npos);
+  EXPECT_NE(p.status().message().find("(0, 0)"), std::string::npos) << p.status().message();
+}
+
+}  // namespace
+}  // namespace swarf

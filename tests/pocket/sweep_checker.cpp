@@ -1,0 +1,183 @@
+#include "pocket/sweep_checker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace swarf::testing {
+
+namespace {
+
+bool inside_ring(const Ring& r, Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    if ((r[i].y > p.y) != (r[j].y > p.y) &&
+        p.x < (r[j].x - r[i].x) * (p.y - r[i].y) / (r[j].y - r[i].y) + r[i].x)
+      in = !in;
+  }
+  return in;
+}
+bool inside(const PolygonSet& s, Vec2 p) {
+  if (!inside_ring(s.rings[0], p)) return false;
+  for (std::size_t k = 1; k < s.rings.size(); ++k)
+    if (inside_ring(s.rings[k], p)) return false;
+  return true;
+}
+double edge_distance(const PolygonSet& s, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Ring& r : s.rings)
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Vec2 a = r[i], b = r[(i + 1) % r.size()];
+      const Vec2 ab = b - a;
+      const double t = std::clamp(dot(p - a, ab) / std::max(norm_sq(ab), 1e-300), 0.0, 1.0);
+      best = std::min(best, norm(p - (a + ab * t)));
+    }
+  return best;
+}
+
+struct Sample {
+  Vec2 p;
+  Vec2 dir;
+  double ds;
+  bool entry;
+};
+
+// Points along the floor pass every `step` mm.
+std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
+  double zmin = std::numeric_limits<double>::infinity();
+  for (const Move& m : tp.moves)
+    zmin = std::min(zmin, m.end.z);
+  std::vector<Sample> out;
+  Vec3 at = tp.moves.empty() ? Vec3{} : tp.moves.front().end;
+  for (const Move& m : tp.moves) {
+    const Vec3 from = at;
+    at = m.end;
+    if (std::abs(m.end.z - zmin) > 1e-6 || std::abs(from.z - zmin) > 1e-6) continue;
+    if (m.kind == MoveKind::kRapid) continue;
+    const bool entry = m.kind != MoveKind::kFeed;
+    if (m.is_arc()) {
+      const Vec2 c = m.center.xy();
+      const double r = norm(from.xy() - c);
+      double a0 = std::atan2(from.y - c.y, from.x - c.x);
+      double a1 = std::atan2(m.end.y - c.y, m.end.x - c.x);
+      double sweep = a1 - a0;
+      if (m.clockwise && sweep >= 0) sweep -= 2 * kPi;
+      if (!m.clockwise && sweep <= 0) sweep += 2 * kPi;
+      const int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) * r / step)));
+      for (int k = 1; k <= n; ++k) {
+        const double a = a0 + sweep * k / n;
+        const Vec2 tangent = Vec2{-std::sin(a), std::cos(a)} * (m.clockwise ? -1.0 : 1.0);
+        out.push_back(
+            {c + Vec2{std::cos(a), std::sin(a)} * r, tangent, std::abs(sweep) * r / n, entry});
+      }
+      continue;
+    }
+    const Vec2 a = from.xy(), b = m.end.xy();
+    const double len = norm(b - a);
+    if (len < 1e-12) continue;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+    for (int k = 1; k <= n; ++k)
+      out.push_back({a + (b - a) * (static_cast<double>(k) / n), (b - a) / len, len / n, entry});
+  }
+  return out;
+}
+
+}  // namespace
+
+SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path, double target_deg,
+                        double h, double tol) {
+  SweepReport rep;
+  Box2 box;
+  for (const Ring& r : region.rings)
+    for (Vec2 p : r)
+      box.add(p);
+  box = box.inflated(R + 2 * h);
+  const int w = static_cast<int>(std::ceil(box.size().x / h)) + 1;
+  const int ht = static_cast<int>(std::ceil(box.size().y / h)) + 1;
+  auto centre = [&](int i, int j) { return box.min + Vec2{i * h, j * h}; };
+  // 0 outside, 1 material, 2 cut.
+  std::vector<unsigned char> cell(static_cast<std::size_t>(w) * ht, 0);
+  std::vector<float> wall_d(cell.size(), 0.f);
+  for (int j = 0; j < ht; ++j)
+    for (int i = 0; i < w; ++i) {
+      const Vec2 p = centre(i, j);
+      if (inside(region, p)) {
+        cell[static_cast<std::size_t>(j) * w + i] = 1;
+        wall_d[static_cast<std::size_t>(j) * w + i] = static_cast<float>(edge_distance(region, p));
+      }
+    }
+  auto stamp = [&](Vec2 c, std::vector<unsigned char>& img, unsigned char from, unsigned char to) {
+    const int j0 = std::max(0, static_cast<int>(std::ceil((c.y - R - box.min.y) / h)));
+    const int j1 = std::min(ht - 1, static_cast<int>(std::floor((c.y + R - box.min.y) / h)));
+    for (int j = j0; j <= j1; ++j) {
+      const double dy = box.min.y + j * h - c.y;
+      const double half = std::sqrt(std::max(0.0, R * R - dy * dy));
+      const int i0 = std::max(0, static_cast<int>(std::ceil((c.x - half - box.min.x) / h)));
+      const int i1 = std::min(w - 1, static_cast<int>(std::floor((c.x + half - box.min.x) / h)));
+      for (int i = i0; i <= i1; ++i) {
+        unsigned char& v = img[static_cast<std::size_t>(j) * w + i];
+        if (v == from) v = to;
+      }
+    }
+  };
+  const std::vector<Sample> samples = floor_samples(path, 0.5 * h);
+  double within = 0.0;
+  for (const Sample& s : samples) {
+    const double d = edge_distance(region, s.p);
+    const double gouge = inside(region, s.p) ? R - d : R + d;
+    rep.max_gouge_mm = std::max(rep.max_gouge_mm, gouge);
+    if (!s.entry) {
+      // Engagement: front half of a circle just outside the tool, 1 degree apart.
+      int n = 0;
+      const double rr = R + 0.5 * h;
+      const double base = std::atan2(s.dir.y, s.dir.x);
+      for (int k = -89; k <= 90; ++k) {
+        const double a = base + deg_to_rad(k - 0.5);
+        const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
+        const int i = static_cast<int>(std::lround((q.x - box.min.x) / h));
+        const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
+        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1)
+          ++n;
+      }
+      const double eng = n;
+      if (eng > 2.0) {
+        rep.cutting_length_mm += s.ds;
+        if (std::abs(eng - target_deg) <= 0.2 * target_deg) within += s.ds;
+        rep.max_engagement_deg = std::max(rep.max_engagement_deg, eng);
+        if (eng >= 170.0) rep.slot_length_mm += s.ds;
+      }
+    }
+    stamp(s.p, cell, 1, 2);
+  }
+  if (rep.cutting_length_mm > 0) rep.within_20pct = within / rep.cutting_length_mm;
+  // Opening of the pocket by the disk: union of disks at centres >= R from every wall.
+  std::vector<unsigned char> reach(cell.size(), 0);
+  for (int j = 0; j < ht; ++j)
+    for (int i = 0; i < w; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * w + i;
+      if (cell[k] == 0 || wall_d[k] < R) continue;
+      // Only centres next to a non-centre matter (the rest lie inside their disks).
+      bool edge = false;
+      for (int dj = -1; dj <= 1 && !edge; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const std::size_t q = static_cast<std::size_t>(j + dj) * w + (i + di);
+          if (cell[q] == 0 || wall_d[q] < R) edge = true;
+        }
+      if (edge)
+        stamp(centre(i, j), reach, 0, 1);
+      else
+        reach[k] = 1;
+    }
+  for (std::size_t k = 0; k < cell.size(); ++k) {
+    if (cell[k] == 0) continue;
+    if (reach[k] == 0) {
+      rep.unreachable_mm2 += h * h;
+    } else if (cell[k] == 1 && wall_d[k] > tol) {
+      rep.residual_mm2 += h * h;
+    }
+  }
+  return rep;
+}
+
+}  // namespace swarf::testing

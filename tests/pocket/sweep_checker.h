@@ -1,0 +1,29 @@
+// An independent check of a pocket toolpath, sharing no code with the generator: a fine
+// bitmap of the pocket, the tool disk stamped brute force along the final floor pass
+// sampled densely, exact point-to-edge distances for gouges, and the engagement read off
+// the stamped bitmap as the arc of the tool's front half touching uncut material.
+#pragma once
+
+#include "swarf/polygon/polygon.h"
+#include "swarf/toolpath/toolpath.h"
+
+namespace swarf::testing {
+
+struct SweepReport {
+  double max_gouge_mm = 0.0;        ///< deepest the disk reaches past a wall or into an island
+  double residual_mm2 = 0.0;        ///< reachable material left, farther than tol from walls
+  double unreachable_mm2 = 0.0;     ///< pocket minus its opening by the tool disk
+  double cutting_length_mm = 0.0;   ///< floor-pass length with engagement > 2 deg (no entry)
+  double within_20pct = 0.0;        ///< fraction of it within +-20 % of the target angle
+  double max_engagement_deg = 0.0;  ///< outside the entry
+  double slot_length_mm = 0.0;      ///< length engaged >= 170 deg (a full slot), outside entry
+};
+
+/// region: outer ring then islands. The floor pass is the moves at the lowest z of the
+/// program; helix, ramp and plunge moves and the arcs at the bottom of a helix are the
+/// entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a wall is
+/// not counted as residual.
+SweepReport sweep_check(const PolygonSet& region, double tool_radius_mm, const Toolpath& path,
+                        double target_engagement_deg, double pixel_mm, double residual_tol_mm);
+
+}  // namespace swarf::testing
