@@ -12,6 +12,7 @@ namespace swarf {
 Status validate(const RestOptions& o) {
   if (!(o.tool_radius_mm > 0.0)) return bad_parameter("rest: tool radius must be positive");
   if (!(o.min_thickness_mm >= 0.0)) return bad_parameter("rest: min thickness must be >= 0");
+  if (!(o.convolution_tolerance_mm >= 0.0)) return bad_parameter("rest: negative tolerance");
   if (!(o.convolution.arc_tolerance_mm > 0.0))
     return bad_parameter("rest: arc tolerance must be positive");
   return {};
@@ -40,6 +41,12 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     }
     if (j0 > j1) continue;
     const long nr = static_cast<long>(std::ceil(o.tool_radius_mm / fam.pitch_mm - 1e-9));
+    ConvolutionOptions conv = o.convolution;
+    if (o.convolution_tolerance_mm > 0.0)
+      conv.neighbour_stride = std::max(
+          1, static_cast<int>(std::floor(
+                 std::sqrt(8.0 * o.tool_radius_mm * o.convolution_tolerance_mm) / fam.pitch_mm +
+                 1e-9)));
     const long base = lattice_index(fam, 0);
     SliceFamily inflated;
     inflated.axis = fam.axis;
@@ -48,8 +55,8 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     inflated.slices.resize(static_cast<std::size_t>(j1 - j0 + 1 + 2 * nr));
     parallel_for(inflated.slices.size(), ctx.threads, [&](std::size_t k) {
       if (ctx.cancelled()) return;
-      inflated.slices[k] = convolve_slice(fam, base + j0 - nr + static_cast<long>(k),
-                                          o.tool_radius_mm, o.convolution);
+      inflated.slices[k] =
+          convolve_slice(fam, base + j0 - nr + static_cast<long>(k), o.tool_radius_mm, conv);
     });
     res.first_level = fam.level(static_cast<std::size_t>(j0));
     res.slices.resize(static_cast<std::size_t>(j1 - j0 + 1));
@@ -58,7 +65,7 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
       const std::size_t j = static_cast<std::size_t>(j0) + k;
       // Shrink the inflated family back at slice j's own level, then subtract the part.
       const PolygonSet closed =
-          convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, o.convolution);
+          convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, conv);
       res.slices[k] = subtract(closed, fam.slices[j]);
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};

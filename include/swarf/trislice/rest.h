@@ -25,7 +25,10 @@ struct RestOptions {
   /// Only slices whose level lies in this box (per family, along its axis) are analysed;
   /// empty: all. Saves time when only a feature is of interest.
   Box3 region;
-  ConvolutionOptions convolution{0.005};
+  ConvolutionOptions convolution{0.005, 1};
+  /// Normal error the closing may make between slices, mm: neighbours are read every
+  /// floor(sqrt(8 r tol) / ds) slices (offset.h bound ds'^2 / (8 r) <= tol). 0 = every slice.
+  double convolution_tolerance_mm = 0.005;
 };
 Status validate(const RestOptions& o);
 
