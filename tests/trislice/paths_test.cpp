@@ -239,3 +239,26 @@ TEST(TriSliceRest, InnerFilletShowsAndOuterDoesNot) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+TEST(TriSlicePaths, ScanLinesIndependentOfThreadCount) {
+  const Mesh torus = make_torus({0, 0, 5}, 12, 5, 48, 24);
+  auto model = build_trislice(torus, 0.25);
+  ASSERT_TRUE(model.ok());
+  const TriSliceTop top = TriSliceTop::build(*model);
+  ScanParams p;
+  p.stepover_mm = 0.7;
+  p.sampling_mm = 0.3;
+  Context one, many;
+  one.threads = 1;
+  many.threads = 3;
+  auto a = scan_cl_lines(top, model->bounds, 4.0, 0.0, p, one);
+  auto b = scan_cl_lines(top, model->bounds, 4.0, 0.0, p, many);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(*a, *b);
+}
+
+}  // namespace
+}  // namespace swarf
