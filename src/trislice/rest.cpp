@@ -66,7 +66,17 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
       // Shrink the inflated family back at slice j's own level, then subtract the part.
       const PolygonSet closed =
           convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, conv);
-      res.slices[k] = subtract(closed, fam.slices[j]);
+      PolygonSet residue = subtract(closed, fam.slices[j]);
+      // Drop slivers thinner than min_thickness (an opening by half of it): the closing of a
+      // concave arc of exactly the tool radius leaves micrometre films along the arc, which a
+      // vertical thickness would count in full where the arc is steep.
+      if (o.min_thickness_mm > 0.0 && !residue.empty()) {
+        OffsetOptions oo;
+        oo.arc_tolerance_mm = conv.arc_tolerance_mm;
+        residue =
+            offset(offset(residue, -0.5 * o.min_thickness_mm, oo), 0.5 * o.min_thickness_mm, oo);
+      }
+      res.slices[k] = std::move(residue);
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
     ctx.report("unmachinable regions", (a + 1) / 3.0);

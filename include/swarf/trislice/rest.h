@@ -19,8 +19,9 @@ struct RestOptions {
   double tool_radius_mm = 4.0;
   /// Families to analyse, indexed by Axis. The vertical ones (x, y) give the top-view map.
   std::array<bool, 3> families{true, true, false};
-  /// Residues thinner than this (vertically, in the map and the statistics) are ignored:
-  /// the faceting of the mesh and the arc tolerance leave slivers of a few micrometres.
+  /// Residues thinner than this are removed (an opening by half of it in each slice) and
+  /// left out of the map: the faceting of the mesh and the arc tolerance leave slivers of a
+  /// few micrometres along concave arcs of about the tool radius.
   double min_thickness_mm = 0.02;
   /// Only slices whose level lies in this box (per family, along its axis) are analysed;
   /// empty: all. Saves time when only a feature is of interest.
