@@ -158,6 +158,44 @@ ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
       map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
     }
   }
+  // The xy family: the residue's vertical extent is the number of levels whose residue covers
+  // the cell centre, times the pitch. It covers every cell, so it votes everywhere.
+  const SliceFamily& fz = rest.families[static_cast<std::size_t>(Axis::kZ)];
+  if (fz.size() > 0) {
+    std::vector<double> own(ncell, 0.0);
+    std::vector<double> xs;
+    for (std::size_t l = 0; l < fz.size(); ++l) {
+      if (fz.slices[l].empty()) continue;
+      const Box2 pb = bounds(fz.slices[l]);
+      const int j0 =
+          std::max(0, static_cast<int>(std::floor((pb.min.y - map.origin.y) / map.cell_mm)));
+      const int j1 = std::min(
+          map.ny - 1, static_cast<int>(std::floor((pb.max.y - map.origin.y) / map.cell_mm)));
+      for (int j = j0; j <= j1; ++j) {
+        const double y = map.origin.y + (j + 0.5) * map.cell_mm;
+        xs.clear();
+        for (const Ring& ring : fz.slices[l].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 p0 = ring[k], p1 = ring[(k + 1) % ring.size()];
+            if ((p0.y <= y) == (p1.y <= y)) continue;
+            xs.push_back(p0.x + (y - p0.y) / (p1.y - p0.y) * (p1.x - p0.x));
+          }
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+          const int i0 =
+              std::max(0, static_cast<int>(std::ceil((xs[k] - map.origin.x) / map.cell_mm - 0.5)));
+          const int i1 = std::min(
+              map.nx - 1,
+              static_cast<int>(std::floor((xs[k + 1] - map.origin.x) / map.cell_mm - 0.5)));
+          for (int i = i0; i <= i1; ++i)
+            own[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
+                static_cast<std::size_t>(i)] += fz.pitch_mm;
+        }
+      }
+    }
+    for (std::size_t c = 0; c < ncell; ++c)
+      map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
+  }
   for (double& v : map.mm)
     v = std::max(v, 0.0);
   return map;

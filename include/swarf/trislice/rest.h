@@ -17,8 +17,9 @@ namespace swarf {
 
 struct RestOptions {
   double tool_radius_mm = 4.0;
-  /// Families to analyse, indexed by Axis. The vertical ones (x, y) give the top-view map.
-  std::array<bool, 3> families{true, true, false};
+  /// Families to analyse, indexed by Axis. Each gives its own top-view thickness (the xy
+  /// family as the number of levels holding residue times the pitch); the map keeps the least.
+  std::array<bool, 3> families{true, true, true};
   /// Residues thinner than this are removed (an opening by half of it in each slice) and
   /// left out of the map: the faceting of the mesh and the arc tolerance leave slivers of a
   /// few micrometres along concave arcs of about the tool radius.
@@ -50,10 +51,10 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
 double residue_thickness(const SliceFamily& family, std::size_t j, double s);
 
 /// Top view of the residue: thickness (mm) per cell of `cell_mm` over the model's xy bounds;
-/// row 0 at min y. Where both vertical families cross a cell the smaller thickness counts: a
-/// region is unmachinable only if both representations agree (superposition, section 2.1);
-/// this removes the false residues a family shows where a wall is nearly parallel to its
-/// planes (offset.h).
+/// row 0 at min y. Where several families see a cell the smallest thickness counts: a region
+/// is unmachinable only if the representations agree (superposition, section 2.1); this
+/// removes the false residues a family shows where a wall is nearly parallel to its planes
+/// (offset.h).
 struct ThicknessMap {
   int nx = 0, ny = 0;
   double cell_mm = 0.1;
