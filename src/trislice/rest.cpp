@@ -216,13 +216,24 @@ Image thickness_image(const ThicknessMap& map, double min_mm) {
 std::string residue_points_ply(const RestRegions& rest, double spacing_mm) {
   std::vector<Vec3> pts;
   const double h = spacing_mm > 0.0 ? spacing_mm : rest.pitch_mm;
+  std::vector<double> us;
   for (const SliceFamily& f : rest.families) {
     for (std::size_t j = 0; j < f.size(); ++j) {
-      for (const PolygonSet& part : connected_parts(f.slices[j])) {
-        const Box2 b = bounds(part);
-        for (double u = std::ceil(b.min.x / h) * h; u <= b.max.x; u += h)
-          for (double v = std::ceil(b.min.y / h) * h; v <= b.max.y; v += h)
-            if (contains(part, {u, v})) pts.push_back(from_plane({u, v}, f.level(j), f.axis));
+      if (f.slices[j].empty()) continue;
+      // Scanline fill of the residue in its plane: rows v = k h, crossings sorted in u.
+      const Box2 b = bounds(f.slices[j]);
+      for (double v = std::ceil(b.min.y / h) * h; v <= b.max.y; v += h) {
+        us.clear();
+        for (const Ring& ring : f.slices[j].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 p0 = ring[k], p1 = ring[(k + 1) % ring.size()];
+            if ((p0.y <= v) == (p1.y <= v)) continue;
+            us.push_back(p0.x + (v - p0.y) / (p1.y - p0.y) * (p1.x - p0.x));
+          }
+        std::sort(us.begin(), us.end());
+        for (std::size_t k = 0; k + 1 < us.size(); k += 2)
+          for (double u = std::ceil(us[k] / h) * h; u <= us[k + 1]; u += h)
+            pts.push_back(from_plane({u, v}, f.level(j), f.axis));
       }
     }
   }
