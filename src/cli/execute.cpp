@@ -43,21 +43,30 @@ namespace {
 
 const char* type_name(ParamType t) {
   switch (t) {
-    case ParamType::kNumber: return "a number";
-    case ParamType::kInteger: return "a whole number";
-    case ParamType::kString: return "a string";
-    case ParamType::kBool: return "true or false";
-    case ParamType::kNumberList: return "a list of numbers";
+    case ParamType::kNumber:
+      return "a number";
+    case ParamType::kInteger:
+      return "a whole number";
+    case ParamType::kString:
+      return "a string";
+    case ParamType::kBool:
+      return "true or false";
+    case ParamType::kNumberList:
+      return "a list of numbers";
   }
   return "?";
 }
 
 bool type_matches(ParamType t, const json& v) {
   switch (t) {
-    case ParamType::kNumber: return v.is_number() && std::isfinite(v.get<double>());
-    case ParamType::kInteger: return v.is_number_integer();
-    case ParamType::kString: return v.is_string();
-    case ParamType::kBool: return v.is_boolean();
+    case ParamType::kNumber:
+      return v.is_number() && std::isfinite(v.get<double>());
+    case ParamType::kInteger:
+      return v.is_number_integer();
+    case ParamType::kString:
+      return v.is_string();
+    case ParamType::kBool:
+      return v.is_boolean();
     case ParamType::kNumberList:
       if (!v.is_array()) return false;
       for (const json& e : v)
@@ -79,7 +88,8 @@ Result<json> complete_params(const Operation& op, const json& given, const std::
       if (q.key == it.key()) p = &q;
     if (p == nullptr) {
       std::string known;
-      for (const Param& q : op.params) known += (known.empty() ? "" : ", ") + q.key;
+      for (const Param& q : op.params)
+        known += (known.empty() ? "" : ", ") + q.key;
       return bad_input(where + ": unknown parameter \"" + it.key() + "\" for " + op.name +
                        " (known: " + known + ")");
     }
@@ -191,7 +201,8 @@ Result<std::string> execute(const Operation& op, OperationInput input, const Out
     for (const auto& [name, bytes] : res.report_files)
       files.emplace_back((dir / name).string(), bytes);
   }
-  for (const auto& [path, bytes] : files) SWARF_RETURN_IF_ERROR(write_file_atomic(path, bytes));
+  for (const auto& [path, bytes] : files)
+    SWARF_RETURN_IF_ERROR(write_file_atomic(path, bytes));
 
   std::string line = format_summary(op.name, res.summary);
   if (!out.gcode.empty()) line += "\n  wrote " + out.gcode;

@@ -70,7 +70,8 @@ Status parse_job(std::string_view text, const std::string& job_path, const JobOp
   for (auto it = job.begin(); it != job.end(); ++it) {
     static const char* kKeys[] = {"part", "tool", "stock", "operation", "outputs", "comment"};
     bool known = false;
-    for (const char* k : kKeys) known = known || it.key() == k;
+    for (const char* k : kKeys)
+      known = known || it.key() == k;
     if (!known)
       return bad_input(job_path + ": unknown key \"" + it.key() +
                        "\" (part, tool, stock, operation, outputs)");
@@ -85,13 +86,15 @@ Status parse_job(std::string_view text, const std::string& job_path, const JobOp
   op = find_operation(type);
   if (op == nullptr) {
     std::string known;
-    for (const Operation& o : operations()) known += (known.empty() ? "" : ", ") + o.name;
+    for (const Operation& o : operations())
+      known += (known.empty() ? "" : ", ") + o.name;
     return bad_input(job_path + ": unknown operation type \"" + type + "\" (" + known + ")");
   }
   json given = job["operation"];
   if (job.contains("stock")) {
     bool takes_stock = false;
-    for (const Param& p : op->params) takes_stock = takes_stock || p.key == "stock";
+    for (const Param& p : op->params)
+      takes_stock = takes_stock || p.key == "stock";
     if (!takes_stock) return bad_input(job_path + ": operation " + type + " takes no stock");
     if (job["stock"].is_string() && !given.contains("stock")) {
       std::string stock = job["stock"].get<std::string>();
@@ -125,10 +128,11 @@ Status parse_job(std::string_view text, const std::string& job_path, const JobOp
     return {};
   };
   for (auto it = outputs.begin(); it != outputs.end(); ++it) {
-    static const char* kKeys[] = {"gcode", "dialect", "csv", "svg", "report", "program_number",
-                                  "line_numbers"};
+    static const char* kKeys[] = {"gcode",  "dialect",        "csv",         "svg",
+                                  "report", "program_number", "line_numbers"};
     bool known = false;
-    for (const char* k : kKeys) known = known || it.key() == k;
+    for (const char* k : kKeys)
+      known = known || it.key() == k;
     if (!known) return bad_input(job_path + ": unknown output \"" + it.key() + "\"");
   }
   SWARF_RETURN_IF_ERROR(path_of("gcode", out.gcode));

@@ -53,8 +53,10 @@ Result<nlohmann::json> value_from_flag(const Param& p, const std::string& text) 
         return bad_parameter(flag + ": '" + text + "' is not a whole number");
       return nlohmann::json(v);
     }
-    case ParamType::kString: return nlohmann::json(text);
-    case ParamType::kBool: return nlohmann::json(text == "true" || text == "1" || text == "yes");
+    case ParamType::kString:
+      return nlohmann::json(text);
+    case ParamType::kBool:
+      return nlohmann::json(text == "true" || text == "1" || text == "yes");
     case ParamType::kNumberList: {
       nlohmann::json list = nlohmann::json::array();
       std::size_t start = 0;
@@ -114,6 +116,7 @@ struct OperationFlags {
   OutputSpec out;
   std::string dialect = "iso";
   std::map<std::string, std::string> values;  // param key -> text typed
+  std::map<std::string, bool> switches;       // bool param key -> --key / --no-key
   std::map<std::string, CLI::Option*> options;
 };
 
@@ -122,6 +125,10 @@ int run_operation(OperationFlags& f, const Globals& g) {
   for (const Param& p : f.op->params) {
     CLI::Option* o = f.options.at(p.key);
     if (o->count() == 0) continue;
+    if (p.type == ParamType::kBool) {
+      given[p.key] = f.switches[p.key];
+      continue;
+    }
     Result<nlohmann::json> v = value_from_flag(p, f.values[p.key]);
     if (!v.ok()) return report_failure(v.status());
     given[p.key] = *v;
@@ -185,9 +192,13 @@ void add_operation(CLI::App& app, const Operation& op, OperationFlags& f, Global
     std::string help = p.help;
     if (!p.default_value.is_null()) help += " (default " + p.default_value.dump() + ")";
     if (p.type == ParamType::kBool) {
-      f.options[p.key] = pg->add_option(flag_of(p.key), f.values[p.key], help + ": true|false");
+      // A switch: --zigzag turns it on, --no-zigzag off; absent keeps the default.
+      const std::string off = "!--no-" + flag_of(p.key).substr(2);
+      f.options[p.key] = pg->add_flag(flag_of(p.key) + "," + off, f.switches[p.key], help);
     } else {
-      f.options[p.key] = pg->add_option(flag_of(p.key), f.values[p.key], help);
+      static const char* kTypeNames[] = {"NUMBER", "INT", "TEXT", "", "N,N,..."};
+      f.options[p.key] = pg->add_option(flag_of(p.key), f.values[p.key], help)
+                             ->type_name(kTypeNames[static_cast<int>(p.type)]);
     }
   }
   sub->callback([&f, &g, &exit_code] {
@@ -208,7 +219,8 @@ int run_main(int argc, char** argv) {
 
   std::string job_path;
   JobOptions job_options;
-  CLI::App* run = app.add_subcommand("run", "run a job file (JSON: part, tool, operation, outputs)");
+  CLI::App* run =
+      app.add_subcommand("run", "run a job file (JSON: part, tool, operation, outputs)");
   run->add_option("job", job_path, "job file")->required();
   run->add_option("--output-dir", job_options.output_dir,
                   "write the job's outputs here (default: beside the job file)");

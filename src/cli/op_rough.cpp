@@ -1,5 +1,6 @@
 // swarf rough: voxel zig-zag roughing with region sequencing (seed 003).
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,10 +59,24 @@ Result<OperationOutput> run_rough(const OperationInput& in) {
     return bad_parameter("--offset: '" + offset + "' is not disk or paper");
   }
   if (!p["stock"].is_null()) {
-    // A stock STL: its bounding box is the stock (the voxel model machines box stock).
-    auto stock = read_stl(p["stock"].get<std::string>());
-    if (!stock.ok()) return stock.status();
-    rp.stock = bounds(stock->mesh);
+    const std::string spec = p["stock"].get<std::string>();
+    if (spec.rfind("box:", 0) == 0) {
+      // "box:x0,y0,z0,x1,y1,z1", mm.
+      double v[6];
+      char tail = 0;
+      if (std::sscanf(spec.c_str() + 4, "%lf,%lf,%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3],
+                      &v[4], &v[5], &tail) != 6 ||
+          !(v[0] < v[3] && v[1] < v[4] && v[2] < v[5])) {
+        return bad_parameter("--stock: '" + spec + "' is not box:x0,y0,z0,x1,y1,z1 with x0 < x1, " +
+                             "y0 < y1, z0 < z1");
+      }
+      rp.stock = Box3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    } else {
+      // A stock STL: its bounding box is the stock (the voxel model machines box stock).
+      auto stock = read_stl(spec);
+      if (!stock.ok()) return stock.status();
+      rp.stock = bounds(stock->mesh);
+    }
   }
   std::vector<double> angles;
   for (const auto& a : p["rotate"])
@@ -146,7 +161,8 @@ const OperationRegistrar kRegistrar{Operation{
          "tool offset: disk (exact) or paper (n0-voxel square, Eq. 3.1)"},
         {"margin", ParamType::kNumber, 0.0, "stock beyond the part's box sideways, mm"},
         {"top_margin", ParamType::kNumber, 0.0, "stock above the part's top, mm"},
-        {"stock", ParamType::kString, nullptr, "stock STL (its bounding box is used)", true},
+        {"stock", ParamType::kString, nullptr,
+         "stock: box:x0,y0,z0,x1,y1,z1 or an STL (its bounding box is used)", true},
         {"clearance", ParamType::kNumber, 5.0, "clearance plane above the stock, mm"},
         {"feed", ParamType::kNumber, 1000.0, "cutting feed, mm/min"},
         {"plunge_feed", ParamType::kNumber, 300.0, "plunge feed, mm/min"},

@@ -15,6 +15,8 @@ std::vector<Param> schedule_params() {
                "largest factor a feed may be raised by (1: only slow down)"});
   p.push_back({"min_feed", ParamType::kNumber, 1.0, "lowest feed written, mm/min"});
   p.push_back({"max_feed", ParamType::kNumber, 0.0, "highest raised feed, mm/min (0: no cap)"});
+  p.push_back({"max_chip", ParamType::kNumber, 0.0,
+               "chip-load limit, mm per tooth (0: none): no feed above it"});
   p.push_back({"verify", ParamType::kBool, true,
                "simulate the new program again and report its predicted peak"});
   return p;
@@ -32,6 +34,9 @@ Result<OperationOutput> run_schedule(const OperationInput& in) {
   fo.max_increase = in.params["max_increase"].get<double>();
   fo.min_feed_mm_min = in.params["min_feed"].get<double>();
   fo.max_feed_mm_min = in.params["max_feed"].get<double>();
+  fo.max_chip_mm = in.params["max_chip"].get<double>();
+  fo.spindle_rpm = s.options.spindle_rpm > 0.0 ? s.options.spindle_rpm : s.program.spindle_rpm;
+  fo.flutes = s.tool.flutes;
   if (!(fo.max_force_n > 0.0)) return bad_parameter("--max-force must be positive");
   if (!(fo.max_increase >= 1.0)) return bad_parameter("--max-increase must be at least 1");
   opt.force_limit_n = fo.max_force_n;

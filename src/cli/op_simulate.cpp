@@ -2,6 +2,8 @@
 //   --flutes 2 --helix 30 --rpm 3600 --coefficients K.json --pitch 0.1 --forces forces.csv
 //   --report out/
 // Material removal and cutting forces of a G-code program (seed 001 section 3.3).
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -11,6 +13,7 @@
 #include "swarf/mesh/stl.h"
 #include "swarf/sim/coefficients.h"
 #include "swarf/sim/simulate.h"
+#include "swarf/toolpath/metrics.h"
 
 namespace swarf::cli {
 
@@ -34,7 +37,9 @@ std::vector<Param> simulate_params() {
        "how the three slice families vote on an edge point: majority or any (the paper)"},
       {"force_limit", ParamType::kNumber, 0.0,
        "force limit for the summary's time above it, N (0: none)"},
-      {"sample_stride", ParamType::kInteger, 1, "keep every n-th rotation step in the waveform"},
+      {"sample_stride", ParamType::kInteger, 0,
+       "keep every n-th rotation step in the waveform (0: every step up to 2 million samples, "
+       "then evenly thinned; peaks and means always use every step)"},
       {"rapid", ParamType::kNumber, 5000.0, "rapid traverse rate, mm/min"},
       {"forces", ParamType::kString, "", "write the force waveform CSV here"},
       {"height_map_cell", ParamType::kNumber, 0.25, "cell of the height map and picture, mm"},
@@ -83,6 +88,13 @@ Result<SimulationSetup> prepare_simulation(const OperationInput& in) {
   ro.start = {0.0, 0.0, stock->bounds().max.z + 10.0};
   Result<Toolpath> program = read_gcode(in.input_path, ro);
   if (!program.ok()) return program.status();
+  if (o.sample_stride == 0) {
+    // Keep the waveform in memory and on disk bounded: about 2 million rows (~80 MB CSV).
+    const double rpm = o.spindle_rpm > 0.0 ? o.spindle_rpm : program->spindle_rpm;
+    const double steps =
+        compute_metrics(*program).machining_time_s * rpm / 60.0 * 360.0 / o.force.angle_step_deg;
+    o.sample_stride = static_cast<int>(std::clamp(std::ceil(steps / 2e6), 1.0, 1e9));
+  }
   return SimulationSetup{std::move(program).value(), *in.tool, std::move(stock).value(), k, o};
 }
 
@@ -138,7 +150,13 @@ Result<OperationOutput> run_simulate(const OperationInput& in) {
   out.toolpaths.push_back(r->annotated);
   out.report_files["forces.svg"] = sim::forces_svg(*r, "Cutting forces: " + in.input_path);
   out.report_files["moves.csv"] = sim::moves_csv(*r);
-  const sim::HeightMap hm = s.stock.height_map(in.params["height_map_cell"].get<double>());
+  const double cell = in.params["height_map_cell"].get<double>();
+  const Vec3 size = s.stock.bounds().size();
+  if (!(cell > 0.0) || size.x / cell * (size.y / cell) > 1e8) {
+    return bad_parameter("--height-map-cell " + std::to_string(cell) +
+                         " mm must be positive and give at most 1e8 cells over the stock");
+  }
+  const sim::HeightMap hm = s.stock.height_map(cell);
   out.report_files["stock_height.csv"] = sim::height_map_csv(hm);
   Result<std::string> png = png_bytes(hm);
   if (!png.ok()) return png.status();

@@ -20,7 +20,9 @@ OperationRegistrar::OperationRegistrar(Operation op) {
             [](const Operation& a, const Operation& b) { return a.name < b.name; });
 }
 
-const std::vector<Operation>& operations() { return registry(); }
+const std::vector<Operation>& operations() {
+  return registry();
+}
 
 const Operation* find_operation(const std::string& name) {
   for (const Operation& op : registry())

@@ -19,7 +19,8 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
   if (n == 0) return;
   const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), n);
   if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i) body(i);
+    for (std::size_t i = 0; i < n; ++i)
+      body(i);
     return;
   }
   // Small dynamic chunks balance uneven work (slices near a part's middle cost more).
@@ -33,7 +34,8 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
       if (begin >= n) return;
       const std::size_t end = std::min(n, begin + chunk);
       try {
-        for (std::size_t i = begin; i < end; ++i) body(i);
+        for (std::size_t i = begin; i < end; ++i)
+          body(i);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
@@ -44,9 +46,11 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
   };
   std::vector<std::thread> pool;
   pool.reserve(workers - 1);
-  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(run);
+  for (std::size_t t = 1; t < workers; ++t)
+    pool.emplace_back(run);
   run();
-  for (auto& th : pool) th.join();
+  for (auto& th : pool)
+    th.join();
   if (failure) std::rethrow_exception(failure);
 }
 

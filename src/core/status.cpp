@@ -4,16 +4,26 @@ namespace swarf {
 
 std::string_view error_name(Error e) {
   switch (e) {
-    case Error::kOk: return "ok";
-    case Error::kBadInput: return "bad input";
-    case Error::kBadParameter: return "bad parameter";
-    case Error::kToolTooLarge: return "tool too large";
-    case Error::kNoEntryFound: return "no entry found";
-    case Error::kOpenMesh: return "open mesh";
-    case Error::kEmptyResult: return "empty result";
-    case Error::kIo: return "i/o error";
-    case Error::kCancelled: return "cancelled";
-    case Error::kInternal: return "internal error";
+    case Error::kOk:
+      return "ok";
+    case Error::kBadInput:
+      return "bad input";
+    case Error::kBadParameter:
+      return "bad parameter";
+    case Error::kToolTooLarge:
+      return "tool too large";
+    case Error::kNoEntryFound:
+      return "no entry found";
+    case Error::kOpenMesh:
+      return "open mesh";
+    case Error::kEmptyResult:
+      return "empty result";
+    case Error::kIo:
+      return "i/o error";
+    case Error::kCancelled:
+      return "cancelled";
+    case Error::kInternal:
+      return "internal error";
   }
   return "unknown error";
 }

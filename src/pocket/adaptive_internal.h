@@ -91,7 +91,5 @@ LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, co
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
                       std::vector<std::size_t>& keep);
-/// Chaikin corner cutting with fixed ends (seed 000 6.6, [7]).
-std::vector<Vec2> chaikin(const std::vector<Vec2>& pts, int iterations);
 
 }  // namespace swarf::pocket

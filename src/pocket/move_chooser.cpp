@@ -169,21 +169,34 @@ namespace {
 // already cleared centre just out of reach of the pixel, facing it. Pixels for which no
 // such point exists are dropped from `stock` (so the search terminates).
 bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
-                 int& pj) {
+                 int& pj, double window_mm = 0.0) {
   const BitImage& mat = stock.material();
+  // A window (> 0) limits the search to material near `from` and drops nothing.
+  int wi0 = 0, wi1 = mat.width() - 1, wj0 = 0, wj1 = mat.height() - 1;
+  if (window_mm > 0.0) {
+    const Vec2 c = m.grid.to_px(from);
+    const double w = window_mm / m.h;
+    wi0 = std::max(0, static_cast<int>(c.x - w));
+    wi1 = std::min(mat.width() - 1, static_cast<int>(c.x + w));
+    wj0 = std::max(0, static_cast<int>(c.y - w));
+    wj1 = std::min(mat.height() - 1, static_cast<int>(c.y + w));
+    if (wi0 > wi1 || wj0 > wj1) return false;
+  }
   struct Px {
     double d2;
     int i, j;
   };
   for (int round = 0; round < 16; ++round) {
     std::vector<Px> px;
-    for (int j = 0; j < mat.height(); ++j) {
-      if (mat.count(j, 0, mat.width() - 1) == 0) continue;
-      for (int i = 0; i < mat.width(); ++i)
+    // In a window, every third pixel each way is plenty to find the nearest material.
+    const int lattice = window_mm > 0.0 ? 3 : 1;
+    for (int j = wj0; j <= wj1; j += lattice) {
+      if (mat.count(j, wi0, wi1) == 0) continue;
+      for (int i = wi0; i <= wi1; i += lattice)
         if (mat.get(i, j)) px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
     }
     if (static_cast<double>(px.size()) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm) return false;
-    const std::size_t tries = std::min<std::size_t>(px.size(), 64);
+    const std::size_t tries = std::min<std::size_t>(px.size(), window_mm > 0.0 ? 12 : 64);
     std::partial_sort(px.begin(), px.begin() + static_cast<std::ptrdiff_t>(tries), px.end(),
                       [](const Px& a, const Px& b) {
                         return a.d2 != b.d2 ? a.d2 < b.d2 : (a.j != b.j ? a.j < b.j : a.i < b.i);
@@ -191,7 +204,7 @@ bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& d
     const double ring = m.radius_mm + 0.5 * m.step_mm;
     for (std::size_t k = 0; k < tries; ++k) {
       const Vec2 q = m.grid.to_world(px[k].i, px[k].j);
-      for (int a = 0; a < 360; a += 15) {
+      for (int a = 0; a<360; a += window_mm> 0.0 ? 30 : 15) {
         const Vec2 u{std::cos(deg_to_rad(a)), std::sin(deg_to_rad(a))};
         const Vec2 c = q + u * ring;
         if (stock.gouges(c) || stock.material_in_disk(c, m.radius_mm + 0.5 * m.h) > 0) continue;
@@ -228,10 +241,15 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
   bool resumed = false;
   std::size_t before_session = 0;
   int last_i = 0, last_j = 0;
+  std::size_t iterations = 0;  // bounds the loop even when shortcuts shorten the path
   for (int session = 0; session < 200; ++session) {
     int last_theta = 0;
     double idle_mm = 0.0;
-    while (raw.eng.size() < max_steps) {
+    const double shortcut_mm = 2.0 * m.radius_mm;
+    double next_shortcut_mm = shortcut_mm;
+    bool shortcut_pending = false, cut_since_shortcut = false;
+    int short_i = 0, short_j = 0;
+    while (raw.eng.size() < max_steps && ++iterations < max_steps) {
       if ((raw.eng.size() & 1023u) == 0 && ctx.cancelled())
         return Status(Error::kCancelled, "adaptive pocket cancelled");
       // seed 000 Algorithm 5. Skip the cutting search when no material is within reach,
@@ -267,6 +285,43 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
       // Termination (seed 000 4.1): a whole boundary round without cutting.
       idle_mm = removed > m.cut_px ? 0.0 : idle_mm + distance(raw.pts[raw.pts.size() - 2], pos);
       if (idle_mm > m.boundary_round_mm) break;
+      // Shortcut (our addition): once the tool has followed the boundary for a while
+      // without cutting, look for material near the end of the last cut; when some is
+      // reachable from cleared space, drop the idle moves and resume there. Saves most of
+      // the boundary rounds of Algorithm 4 that post-processing would throw away.
+      if (removed > m.cut_px) cut_since_shortcut = true;
+      if (idle_mm > next_shortcut_mm) {
+        next_shortcut_mm = idle_mm + shortcut_mm;
+        // A shortcut that led to no cutting: give up on that pixel, go on following.
+        if (shortcut_pending && !cut_since_shortcut) stock.drop_pixel(short_i, short_j);
+        shortcut_pending = false;
+        std::size_t tail = raw.eng.size();
+        while (tail > 0 && raw.eng[tail - 1] <= m.cut_px && !raw.jump[tail - 1])
+          --tail;
+        Vec2 at, d;
+        int si = 0, sj = 0;
+        if (tail > 0 && find_resume(m, stock, raw.pts[tail], at, d, si, sj, 1.5 * shortcut_mm)) {
+          shortcut_pending = true;
+          cut_since_shortcut = false;
+          short_i = si;
+          short_j = sj;
+          raw.eng.resize(tail);
+          raw.kind.resize(tail);
+          raw.jump.resize(tail);
+          raw.entry.resize(tail);
+          raw.pts.resize(tail + 1);
+          raw.eng.push_back(0);
+          raw.kind.push_back(StepKind::kLink);
+          raw.jump.push_back(true);
+          raw.entry.push_back(-1);
+          raw.pts.push_back(at);
+          pos = at;
+          dir = d;
+          idle_mm = 0.0;
+          next_shortcut_mm = shortcut_mm;
+          last_theta = 0;
+        }
+      }
     }
     // Drop the idle tail: it only proved there is nothing left within reach.
     while (!raw.eng.empty() && raw.eng.back() <= m.cut_px) {
@@ -277,7 +332,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
       raw.pts.pop_back();
     }
     pos = raw.pts.back();
-    if (raw.eng.size() >= max_steps) break;
+    if (raw.eng.size() >= max_steps || iterations >= max_steps) break;
     if (resumed && raw.eng.size() <= before_session) stock.drop_pixel(last_i, last_j);
     Vec2 at, d;
     int new_entry = -1;

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "pocket/adaptive_internal.h"
+#include "swarf/toolpath/postprocess.h"
 
 namespace swarf::pocket {
 
@@ -181,21 +182,6 @@ std::vector<std::size_t> pull_taut(const Model& m, const PixelStock& stock,
 
 }  // namespace
 
-std::vector<Vec2> chaikin(const std::vector<Vec2>& pts, int iterations) {
-  std::vector<Vec2> cur = pts;
-  for (int it = 0; it < iterations && cur.size() > 2; ++it) {
-    std::vector<Vec2> next{cur.front()};
-    for (std::size_t k = 0; k + 1 < cur.size(); ++k) {
-      const Vec2 a = cur[k], b = cur[k + 1];
-      if (k > 0) next.push_back(a * 0.75 + b * 0.25);
-      if (k + 2 < cur.size()) next.push_back(a * 0.25 + b * 0.75);
-    }
-    next.push_back(cur.back());
-    cur = std::move(next);
-  }
-  return cur;
-}
-
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
                       std::vector<std::size_t>& keep) {
   // Iterative Douglas-Peucker (no recursion depth limit on long paths).
@@ -236,12 +222,12 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
   const Groups groups = group_regions(m, raw, regions);
   out.trochoid_groups = groups.trochoid;
   out.boundary_groups = groups.boundary;
-  // Algorithm 8 composes the cutting regions (whole trochoid stacks, in order, see
-  // group_regions) with the first region of each boundary group; the gaps it leaves are
-  // patched (6.5). We patch every gap between two cutting regions the same way: a straight
-  // link, checked against walls (gouge) and material (it must not cut) on the stock as it
-  // is at that moment, else the raw boundary-following path between them (safe by
-  // construction), or a retract when that is faster than staying down.
+  // Algorithm 8 (as printed it marks T_stack[t.group]; r.group is meant) composes the cutting
+  // regions (whole trochoid stacks, in order, see group_regions) with the first region of each
+  // boundary group; the gaps it leaves are patched (6.5). We patch every gap between two cutting
+  // regions the same way: a straight link, checked against walls (gouge) and material (it must not
+  // cut) on the stock as it is at that moment, else the raw boundary-following path between them
+  // (safe by construction), or a retract when that is faster than staying down.
   PixelStock stock = fresh_stock(m);
   cut_entry(stock, m, entry);
   out.pts.push_back(raw.pts.front());
@@ -342,7 +328,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     if (!clean || b <= a + 2) continue;
     std::vector<Vec2> win(out.pts.begin() + static_cast<std::ptrdiff_t>(a),
                           out.pts.begin() + static_cast<std::ptrdiff_t>(b) + 1);
-    std::vector<Vec2> sm = chaikin(win, costs.smoothing_iterations);
+    std::vector<Vec2> sm = chaikin_smooth(win, costs.smoothing_iterations);
     // Resample back to the window's point count so kinds stay aligned.
     std::vector<double> cum{0.0};
     for (std::size_t k = 1; k < sm.size(); ++k)

@@ -37,8 +37,8 @@ std::string png_bytes(const Image& image) {
   }
   png_set_write_fn(png, &out, append_to_string, no_flush);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   static_assert(sizeof(Rgb) == 3, "Rgb must be packed as three bytes");
   for (int y = 0; y < image.height; ++y) {

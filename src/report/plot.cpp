@@ -16,7 +16,8 @@ std::string fmt(double v, int decimals = 3) {
   std::string s(buf);
   if (s == "-0" || s.rfind("-0.", 0) == 0) {
     // "-0.000" -> "0.000": avoid a negative zero in text outputs.
-    bool all_zero = std::all_of(s.begin() + 1, s.end(), [](char c) { return c == '0' || c == '.'; });
+    bool all_zero =
+        std::all_of(s.begin() + 1, s.end(), [](char c) { return c == '0' || c == '.'; });
     if (all_zero) s.erase(0, 1);
   }
   return s;
@@ -26,11 +27,20 @@ std::string escape_xml(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -44,12 +54,16 @@ struct MoveStyle {
 
 MoveStyle style_of(const Move& m) {
   switch (m.kind) {
-    case MoveKind::kRapid: return {"#d62728", "4,3", 0.6};
+    case MoveKind::kRapid:
+      return {"#d62728", "4,3", 0.6};
     case MoveKind::kPlunge:
     case MoveKind::kRamp:
-    case MoveKind::kHelix: return {"#ff7f0e", "", 1.2};
-    case MoveKind::kArc: return {m.cutting ? "#2ca02c" : "#999999", "", 1.0};
-    case MoveKind::kFeed: return {m.cutting ? "#1f77b4" : "#999999", m.cutting ? "" : "2,2", 0.8};
+    case MoveKind::kHelix:
+      return {"#ff7f0e", "", 1.2};
+    case MoveKind::kArc:
+      return {m.cutting ? "#2ca02c" : "#999999", "", 1.0};
+    case MoveKind::kFeed:
+      return {m.cutting ? "#1f77b4" : "#999999", m.cutting ? "" : "2,2", 0.8};
   }
   return {"#000000", "", 1.0};
 }
@@ -58,7 +72,8 @@ MoveStyle style_of(const Move& m) {
 
 std::string toolpath_svg(const Toolpath& path, const ToolpathPlotOptions& options) {
   Box2 box = bounds(options.background);
-  for (const Move& m : path.moves) box.add(m.end.xy());
+  for (const Move& m : path.moves)
+    box.add(m.end.xy());
   if (box.empty()) box = Box2{{0, 0}, {1, 1}};
   const double margin = 0.04 * std::max({box.size().x, box.size().y, 1.0});
   box = box.inflated(margin);
@@ -95,7 +110,8 @@ std::string toolpath_svg(const Toolpath& path, const ToolpathPlotOptions& option
       const MoveStyle s2 = style_of(m);
       if (s2.color != st.color || s2.dash != st.dash) break;
       const double step = m.is_arc() ? std::max(0.05, 2.0 / scale) : 1e30;
-      for (const Vec3& p : sample_move(pos, m, step)) o << " " << X(p.x) << "," << Y(p.y);
+      for (const Vec3& p : sample_move(pos, m, step))
+        o << " " << X(p.x) << "," << Y(p.y);
       pos = m.end;
       ++i;
     }
@@ -109,8 +125,8 @@ std::string toolpath_svg(const Toolpath& path, const ToolpathPlotOptions& option
 }
 
 std::string line_chart_svg(const std::vector<Series>& series, const std::string& title,
-                           const std::string& x_label, const std::string& y_label,
-                           double width_px, double height_px) {
+                           const std::string& x_label, const std::string& y_label, double width_px,
+                           double height_px) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const Series& s : series) {
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
@@ -121,9 +137,17 @@ std::string line_chart_svg(const std::vector<Series>& series, const std::string&
       y1 = std::max(y1, s.y[i]);
     }
   }
-  if (x0 > x1) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
+  if (x0 > x1) {
+    x0 = 0;
+    x1 = 1;
+    y0 = 0;
+    y1 = 1;
+  }
   if (x1 - x0 < 1e-12) x1 = x0 + 1;
-  if (y1 - y0 < 1e-12) { y1 += 1; y0 -= 1; }
+  if (y1 - y0 < 1e-12) {
+    y1 += 1;
+    y0 -= 1;
+  }
   const double pad = 0.05 * (y1 - y0);
   y0 -= pad;
   y1 += pad;
@@ -133,11 +157,11 @@ std::string line_chart_svg(const std::vector<Series>& series, const std::string&
   auto Y = [&](double y) { return top + (y1 - y) / (y1 - y0) * ph; };
 
   std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(width_px, 0)
-    << "\" height=\"" << fmt(height_px, 0) << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(width_px, 0) << "\" height=\""
+    << fmt(height_px, 0) << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << fmt(width_px / 2, 0) << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
-    << escape_xml(title) << "</text>\n"
+    << "<text x=\"" << fmt(width_px / 2, 0)
+    << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << escape_xml(title) << "</text>\n"
     << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << fmt(pw, 1) << "\" height=\""
     << fmt(ph, 1) << "\" fill=\"none\" stroke=\"#333\"/>\n";
   for (int k = 0; k <= 5; ++k) {

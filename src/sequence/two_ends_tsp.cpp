@@ -18,6 +18,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGainEps = 1e-9;
 // Distinct tours of the final population the local search starts from.
 constexpr std::size_t kLocalSearchStarts = 8;
+// Instances up to this size get or-opt chains of any length.
+constexpr std::size_t kLongChainsUpTo = 16;
+// Work budget of the kicks of the iterated local search, in units of n^3 (one descent).
+constexpr double kKickWork = 4e6;
 
 // Own mappings from the 64-bit engine (mt19937_64's sequence is fixed by the standard, the
 // std:: distributions are not), so tours are identical across standard libraries.
@@ -193,6 +197,7 @@ Status validate(const SequenceOptions& o) {
     return bad_parameter("sequence crossover and mutation rates must lie in [0, 1]");
   }
   if (o.elite < 0) return bad_parameter("sequence elite count must be >= 0");
+  if (o.kicks < 0) return bad_parameter("sequence kicks must be >= 0");
   return {};
 }
 
@@ -247,8 +252,11 @@ void improve_two_ends_tour(const TwoEndsInstance& in, TwoEndsTour& tour) {
       }
     }
     if (improved) continue;
-    // Or-opt: move a chain of 1..3 regions elsewhere, as it is or reversed.
-    for (std::size_t len = 1; len <= 3 && len < n && !improved; ++len) {
+    // Or-opt: move a chain of 1..3 regions elsewhere, as it is or reversed; on small
+    // instances chains of any length (a segment insertion, the 3-opt move that keeps
+    // directions), which the asymmetric costs of one-way lift-offs need.
+    const std::size_t max_chain = n <= kLongChainsUpTo ? n - 1 : 3;
+    for (std::size_t len = 1; len <= max_chain && len < n && !improved; ++len) {
       for (std::size_t i = 0; i + len <= n && !improved; ++i) {
         std::vector<int> rest;
         rest.reserve(n);
@@ -291,8 +299,8 @@ Result<TwoEndsTour> solve_two_ends_ga(const TwoEndsInstance& in, const SequenceO
   TwoEndsTour best;
   if (n == 0) return best;
   if (n <= 2) {  // every order can be tried
-    best.order.resize(static_cast<std::size_t>(n));
-    std::iota(best.order.begin(), best.order.end(), 0);
+    for (int r = 0; r < n; ++r)
+      best.order.push_back(r);
     orient_optimally(in, best);
     if (n == 2) {
       TwoEndsTour other{{1, 0}, {}, 0.0};
@@ -405,8 +413,46 @@ Result<TwoEndsTour> solve_two_ends_ga(const TwoEndsInstance& in, const SequenceO
       ++tried;
       if (t.cost < best.cost - kGainEps) best = std::move(t);
     }
+    // Iterated local search: kick the best tour (a double bridge, or a random reversal for
+    // short tours), descend again, keep it if better. Local optima of 2-opt/or-opt on
+    // asymmetric costs (lift-offs one way only) can sit 10% above the optimum; the kicks
+    // get out of them. The number of kicks is bounded by an n^3 work budget.
+    const double work = static_cast<double>(nn) * static_cast<double>(nn) * static_cast<double>(nn);
+    const std::size_t kicks = static_cast<std::size_t>(
+        std::min(static_cast<double>(opt.kicks), kKickWork / std::max(1.0, work)));
+    for (std::size_t it = 0; it < kicks; ++it) {
+      TwoEndsTour t = best;
+      if (nn >= 8) {
+        // Double bridge: A B C D -> A C B D.
+        std::size_t cut[3] = {1 + rng.below(nn - 1), 1 + rng.below(nn - 1), 1 + rng.below(nn - 1)};
+        std::sort(cut, cut + 3);
+        if (cut[0] == cut[1] || cut[1] == cut[2]) continue;
+        std::vector<int> g;
+        g.reserve(nn);
+        for (std::size_t x = 0; x < cut[0]; ++x)
+          g.push_back(t.order[x]);
+        for (std::size_t x = cut[1]; x < cut[2]; ++x)
+          g.push_back(t.order[x]);
+        for (std::size_t x = cut[0]; x < cut[1]; ++x)
+          g.push_back(t.order[x]);
+        for (std::size_t x = cut[2]; x < nn; ++x)
+          g.push_back(t.order[x]);
+        t.order = std::move(g);
+      } else {
+        mutate(t.order, rng);
+        mutate(t.order, rng);
+      }
+      improve_two_ends_tour(in, t);
+      if (t.cost < best.cost - kGainEps) best = std::move(t);
+    }
   }
   return best;
+}
+
+Result<TwoEndsTour> solve_two_ends(const TwoEndsInstance& in, const SequenceOptions& opt) {
+  SWARF_RETURN_IF_ERROR(validate(opt));
+  if (in.regions <= kExactUpTo) return solve_two_ends_exact(in);
+  return solve_two_ends_ga(in, opt);
 }
 
 Result<TwoEndsTour> solve_two_ends_exact(const TwoEndsInstance& in) {

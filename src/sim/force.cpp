@@ -1,6 +1,8 @@
 // seed 001 section 3.3, Eq. (2)-(5): cutting-edge elements and their forces.
 #include "swarf/sim/force.h"
 
+#include "swarf/core/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -179,7 +181,7 @@ Vec3 ForceModel::element_force(std::size_t level, double phi, double h_mm) const
 }
 
 ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Vec3 feed_dir,
-                           const EngagementTest& inside, std::size_t max_levels) {
+                           const EngagementTest& inside, std::size_t max_levels, int threads) {
   const std::size_t steps = static_cast<std::size_t>(model.steps_per_rev());
   const std::size_t used = std::min(max_levels, model.levels().size());
   const std::size_t n = used * steps;
@@ -188,7 +190,8 @@ ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Ve
   t.cutting.assign(n, Vec3{});
   t.edge.assign(n, Vec3{});
   t.engaged.assign(n, 0);
-  for (std::size_t k = 0; k < used; ++k) {
+  // Each level writes only its own rows of the table.
+  auto level = [&](std::size_t k) {
     const EdgeLevel& lv = model.levels()[k];
     const double sk = std::sin(lv.kappa_rad), ck = std::cos(lv.kappa_rad);
     for (std::size_t m = 0; m < steps; ++m) {
@@ -208,6 +211,12 @@ ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Ve
       t.edge[idx] = (v * (-kc.kte_n_mm) - nrm * kc.kre_n_mm + mer * kc.kae_n_mm) * lv.db_mm;
       t.engaged[idx] = 1;
     }
+  };
+  if (threads == 1 || used < 8) {
+    for (std::size_t k = 0; k < used; ++k)
+      level(k);
+  } else {
+    parallel_for(used, threads, level);
   }
   return t;
 }

@@ -34,27 +34,6 @@ void append_disk(Vec2 c, double r, std::vector<Vec2>& out) {
     out.push_back({c.x + re * std::cos(i * a), c.y + re * std::sin(i * a)});
 }
 
-// The tool's side profile as (width, height above tip) vertices from the axis outwards,
-// ending at the corner's top; the vertical side is added by the caller.
-std::vector<Vec2> profile(const ToolSolid& tool) {
-  std::vector<Vec2> p;
-  const double r = tool.radius_mm, rc = tool.corner_radius_mm;
-  p.push_back({0.0, 0.0});
-  if (r - rc > 0.0) p.push_back({r - rc, 0.0});
-  if (rc > 0.0) {
-    // A coarser tolerance than the disks': the profile is sampled once per section and per
-    // sample of a move, so it dominates the hulls' cost; 0.5 µm still keeps the section's
-    // area within 0.02%.
-    const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - 2.5 * kArcToleranceMm / rc));
-    const int n = std::clamp(static_cast<int>(std::ceil(0.5 * kPi / step)), 4, 720);
-    for (int k = 1; k <= n; ++k) {
-      const double al = 0.5 * kPi * k / n;
-      p.push_back({r - rc + rc * std::sin(al), rc - rc * std::cos(al)});
-    }
-  }
-  return p;
-}
-
 Vec2 in_plane(Axis axis, double lateral, double axial) {
   // kX planes: (u, v) = (y, z); kY planes: (u, v) = (z, x).
   return axis == Axis::kX ? Vec2{lateral, axial} : Vec2{axial, lateral};
@@ -199,29 +178,32 @@ void append_section_points(const ToolSolid& tool, Vec3 tip, Axis axis, double le
   const double d = std::abs(level - tip[a]);
   if (d >= tool.radius_mm) return;
   const double lateral = axis == Axis::kX ? tip.y : tip.x;
-  static thread_local std::vector<Vec2> prof;
-  static thread_local ToolSolid prof_tool{-1.0, -1.0};
-  if (prof_tool.radius_mm != tool.radius_mm ||
-      prof_tool.corner_radius_mm != tool.corner_radius_mm) {
-    prof = profile(tool);
-    prof_tool = tool;
+  // The section's lower boundary: at lateral offset s the point on the tool's surface at
+  // distance w = sqrt(s^2 + d^2) from the axis, height h(w). Flat where w <= r - rc (two
+  // points); over the corner sampled as s = s_flat + (s_max - s_flat) sin(phi), densest at
+  // the steep end where a ball's section meets the shank; chord error below a micron.
+  const double r = tool.radius_mm, rc = tool.corner_radius_mm;
+  const double smax = std::sqrt(std::max(0.0, r * r - d * d));
+  const double flat = std::max(0.0, r - rc);
+  const double sflat = d < flat ? std::sqrt(flat * flat - d * d) : 0.0;
+  const int n =
+      rc > 0.0 ? std::clamp(static_cast<int>(std::ceil(48.0 * (smax - sflat) / r)), 2, 48) : 0;
+  auto height = [&](double off) {
+    const double w = std::min(r, std::sqrt(off * off + d * d));
+    if (w <= flat) return 0.0;
+    const double u = w - flat;
+    return rc - std::sqrt(std::max(0.0, rc * rc - u * u));
+  };
+  out.push_back(in_plane(axis, lateral - sflat, tip.z + height(sflat)));
+  out.push_back(in_plane(axis, lateral + sflat, tip.z + height(sflat)));
+  for (int k = 1; k <= n; ++k) {
+    const double off = sflat + (smax - sflat) * std::sin(0.5 * kPi * k / n);
+    const double h = tip.z + height(off);
+    out.push_back(in_plane(axis, lateral - off, h));
+    out.push_back(in_plane(axis, lateral + off, h));
   }
-  for (std::size_t i = 0; i < prof.size(); ++i) {
-    const Vec2 p = prof[i];
-    if (p.x >= d) {
-      if (i > 0 && prof[i - 1].x < d) {  // where the profile crosses the plane's distance
-        const Vec2 q = prof[i - 1];
-        const double h = q.y + (d - q.x) * (p.y - q.y) / (p.x - q.x);
-        out.push_back(in_plane(axis, lateral, tip.z + h));
-      }
-      const double s = std::sqrt(std::max(0.0, p.x * p.x - d * d));
-      out.push_back(in_plane(axis, lateral - s, tip.z + p.y));
-      out.push_back(in_plane(axis, lateral + s, tip.z + p.y));
-    }
-  }
-  const double s = std::sqrt(std::max(0.0, tool.radius_mm * tool.radius_mm - d * d));
-  out.push_back(in_plane(axis, lateral - s, top));
-  out.push_back(in_plane(axis, lateral + s, top));
+  out.push_back(in_plane(axis, lateral - smax, top));
+  out.push_back(in_plane(axis, lateral + smax, top));
 }
 
 PolygonSet swept_section(const ToolSolid& tool, std::span<const Vec3> tips, Axis axis, double level,

@@ -64,7 +64,7 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
   SWARF_RETURN_IF_ERROR(validate(opt));
   SWARF_RETURN_IF_ERROR(validate(tool));
   const double rpm = opt.spindle_rpm > 0.0 ? opt.spindle_rpm : path.spindle_rpm;
-  if (!(rpm > 0.0)) return bad_parameter("simulate: spindle speed must be positive");
+  if (!(rpm > 0.0)) return bad_parameter("simulate: no spindle speed (give --rpm or an S word)");
   Result<ForceModel> model_r = ForceModel::create(cutter_from_tool(tool), k, opt.force);
   if (!model_r.ok()) return model_r.status();
   const ForceModel& model = *model_r;
@@ -176,7 +176,8 @@ Result<SimulationResult> simulate(Stock& stock, const Toolpath& path, const Tool
           }
           const ElementTable table = element_table(
               model, ft, dir,
-              [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used);
+              [&](std::size_t, Vec3 p) { return stock.inside(mid + p, opt.engagement); }, used,
+              ctx.threads);
           for (std::size_t lv = 0; lv < table.levels_used; ++lv) {
             mr.engaged_arc_deg = std::max(mr.engaged_arc_deg, engaged_arc_deg(model, table, lv));
           }
@@ -272,6 +273,9 @@ FeedSchedule schedule_feed(const Toolpath& path, const SimulationResult& sim,
     double feed = mv.feed_mm_min * s;
     if (o.max_feed_mm_min > 0.0 && feed > mv.feed_mm_min) {
       feed = std::max(mv.feed_mm_min, std::min(feed, o.max_feed_mm_min));  // caps raises only
+    }
+    if (o.max_chip_mm > 0.0 && o.spindle_rpm > 0.0) {
+      feed = std::min(feed, o.max_chip_mm * o.spindle_rpm * o.flutes);
     }
     feed = std::max(feed, o.min_feed_mm_min);
     nm.feed_mm_min = feed;

@@ -175,11 +175,22 @@ Result<Stock> Stock::from_model(TriSliceModel model) {
   return s;
 }
 
+double Stock::thickness(int family, std::size_t slice) const {
+  // Cells are [level - pitch/2, level + pitch/2] clipped to the model's bounds: the last
+  // cell of a box whose size is not a whole number of pitches is thinner.
+  const SliceFamily& f = model_.families[family];
+  const double c = f.level(slice);
+  const double lo = std::max(c - 0.5 * f.pitch_mm, model_.bounds.min[family]);
+  const double hi = std::min(c + 0.5 * f.pitch_mm, model_.bounds.max[family]);
+  return std::max(0.0, hi - lo);
+}
+
 double Stock::volume_mm3(Axis family) const {
+  const int a = static_cast<int>(family);
   double v = 0.0;
-  for (double a : areas_[static_cast<int>(family)])
-    v += a;
-  return v * model_.pitch_mm;
+  for (std::size_t j = 0; j < areas_[a].size(); ++j)
+    v += areas_[a][j] * thickness(a, j);
+  return v;
 }
 
 double Stock::volume_mm3() const {
@@ -222,7 +233,8 @@ void Stock::rebuild_index(int family, std::size_t slice) {
           if (pass == 0) {
             ++counts[r];
           } else {
-            ix.edges[ix.row_start[r] + counts[r]++] = {a.x, a.y, c.x, c.y};
+            // (u at va, va, vb, du/dv): the crossing test needs no division.
+            ix.edges[ix.row_start[r] + counts[r]++] = {a.x, a.y, c.y, (c.x - a.x) / (c.y - a.y)};
           }
         }
       }
@@ -240,9 +252,9 @@ bool Stock::inside_slice(int family, std::size_t slice, Vec2 uv) const {
       std::clamp(std::floor((uv.y - ix.v0) / ix.row_h), 0.0, static_cast<double>(rows - 1)));
   bool in = false;
   for (std::uint32_t e = ix.row_start[r]; e < ix.row_start[r + 1]; ++e) {
-    const auto& [ua, va, ub, vb] = ix.edges[e];
+    const auto& [ua, va, vb, slope] = ix.edges[e];
     if ((va > uv.y) != (vb > uv.y)) {
-      const double u = ua + (uv.y - va) * (ub - ua) / (vb - va);
+      const double u = ua + (uv.y - va) * slope;
       if (uv.x < u) in = !in;
     }
   }
@@ -251,6 +263,7 @@ bool Stock::inside_slice(int family, std::size_t slice, Vec2 uv) const {
 
 bool Stock::inside(Vec3 p, Axis family) const {
   const int a = static_cast<int>(family);
+  if (p[a] < model_.bounds.min[a] || p[a] > model_.bounds.max[a]) return false;
   const SliceFamily& f = model_.families[a];
   // seed 001 Fig. 10b: the slice nearest to the point along the family's axis, within ds/2.
   const double j = std::round((p[a] - f.first_level) / f.pitch_mm);
@@ -301,7 +314,11 @@ Removal Stock::remove(const ToolSolid& tool, std::span<const Vec3> tips, const C
       jobs.push_back({a, s});
     }
   }
-  const double top = model_.bounds.max.z + 1.0;
+  // The sections in yz / zx planes are the tool's profile plus the shank up to a common top.
+  // The top must clear the stock and every tip's corner (a ramp may start in the air): only
+  // then are all sections translates of one shape cut by the same plane, and the hull of
+  // two of them the exact sweep.
+  const double top = std::max(model_.bounds.max.z, reach.max.z + tool.corner_radius_mm) + 1.0;
   // Every xy slice at or above the highest tip plus the corner radius sees the full-width
   // section: compute that one once (an offset of a long polyline is the costly part).
   const double saturated_level = reach.max.z + tool.corner_radius_mm;
@@ -329,7 +346,7 @@ Removal Stock::remove(const ToolSolid& tool, std::span<const Vec3> tips, const C
     areas_[job.family][job.slice] = a_next;
     slice_bounds_[job.family][job.slice] = swarf::bounds(slice);
     rebuild_index(job.family, job.slice);
-    removed[i] = delta * pitch;
+    removed[i] = delta * thickness(job.family, job.slice);
   });
   for (std::size_t i = 0; i < jobs.size(); ++i)
     out.by_family_mm3[jobs[i].family] += removed[i];
@@ -341,6 +358,8 @@ HeightMap Stock::height_map(double cell_mm) const {
   HeightMap hm;
   const Box3& b = model_.bounds;
   hm.cell_mm = cell_mm;
+  const Vec3 size = b.size();
+  if (!(cell_mm > 0.0) || size.x / cell_mm * (size.y / cell_mm) > 1e8) return hm;  // nx = ny = 0
   hm.x0 = b.min.x;
   hm.y0 = b.min.y;
   hm.nx = std::max(1, static_cast<int>(std::ceil((b.max.x - b.min.x) / cell_mm - 1e-9)));

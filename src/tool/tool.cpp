@@ -11,9 +11,12 @@ namespace swarf {
 
 std::string_view tool_kind_name(ToolKind kind) {
   switch (kind) {
-    case ToolKind::kFlat: return "flat";
-    case ToolKind::kBall: return "ball";
-    case ToolKind::kBull: return "bull";
+    case ToolKind::kFlat:
+      return "flat";
+    case ToolKind::kBall:
+      return "ball";
+    case ToolKind::kBull:
+      return "bull";
   }
   return "unknown";
 }
@@ -42,9 +45,15 @@ std::string Tool::description() const {
   std::ostringstream s;
   s << "D" << diameter_mm << " ";
   switch (kind) {
-    case ToolKind::kFlat: s << "flat end mill"; break;
-    case ToolKind::kBall: s << "ball end mill"; break;
-    case ToolKind::kBull: s << "bull-nose end mill R" << corner_radius_mm; break;
+    case ToolKind::kFlat:
+      s << "flat end mill";
+      break;
+    case ToolKind::kBall:
+      s << "ball end mill";
+      break;
+    case ToolKind::kBull:
+      s << "bull-nose end mill R" << corner_radius_mm;
+      break;
   }
   s << ", " << flutes << " flutes";
   if (!name.empty()) s << " (" << name << ")";

@@ -27,16 +27,18 @@ double gap(double a0, double a1, double b0, double b1) {
   return std::max({0.0, b0 - a1, a0 - b1});
 }
 
-// Cells whose closed square comes closer than `radius` to the segment from the centre of
-// cell (0, 0) to the centre of cell (sx, sy) (sx, sy in {0, 1}), in cell units.
-std::vector<StencilRow> segment_stencil(double radius, double cell, int sx, int sy) {
+// Top squares (side `square` mm, k per cell) whose closed square comes closer than
+// `radius` to the segment from the centre of cell (0, 0) to the centre of cell (sx, sy)
+// (sx, sy in {0, 1}). Offsets count squares from the cell's lower-left square.
+std::vector<StencilRow> segment_stencil(double radius, double square, int k, int sx, int sy) {
   std::vector<StencilRow> rows;
-  const int k = static_cast<int>(std::ceil(radius / cell)) + 2;
-  for (int dy = -k; dy <= k; ++dy) {
+  const double p = 0.5 * k;  // the cell centre, in squares from the cell's corner
+  const int reach = static_cast<int>(std::ceil(radius / square)) + k + 2;
+  for (int dy = -reach; dy <= reach; ++dy) {
     int lo = 1, hi = 0;
-    for (int dx = -k; dx <= k; ++dx) {
-      const double gx = gap(0.0, sx * cell, (dx - 0.5) * cell, (dx + 0.5) * cell);
-      const double gy = gap(0.0, sy * cell, (dy - 0.5) * cell, (dy + 0.5) * cell);
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const double gx = gap(p, p + sx * k, dx, dx + 1) * square;
+      const double gy = gap(p, p + sy * k, dy, dy + 1) * square;
       // Touching at exactly the radius counts as blocked: round towards safety.
       if (std::hypot(gx, gy) < radius * (1.0 + 1e-12) + 1e-9) {
         if (lo > hi) lo = hi = dx;
@@ -74,25 +76,28 @@ std::vector<double> row_window_max(const std::vector<double>& h, int nx, int ny,
   return out;
 }
 
-std::vector<double> dilate(const std::vector<double>& h, int nx, int ny,
+// For every cell (i, j): the max of h (a grid of fnx x fny squares, k per cell) over the
+// stencil placed at square (i k, j k).
+std::vector<double> dilate(const std::vector<double>& h, int fnx, int fny, int k,
                            const std::vector<StencilRow>& stencil, int threads) {
   std::map<std::pair<int, int>, std::vector<double>> windows;
   for (const StencilRow& r : stencil) {
     auto key = std::make_pair(r.lo, r.hi);
-    if (!windows.count(key)) windows.emplace(key, row_window_max(h, nx, ny, r.lo, r.hi, threads));
+    if (!windows.count(key)) windows.emplace(key, row_window_max(h, fnx, fny, r.lo, r.hi, threads));
   }
-  std::vector<double> out(h.size(), kNegInf);
+  const int nx = fnx / k, ny = fny / k;
+  std::vector<double> out(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), kNegInf);
   parallel_for(static_cast<std::size_t>(ny), threads, [&](std::size_t jr) {
     const int j = static_cast<int>(jr);
     for (const StencilRow& r : stencil) {
-      const int js = j + r.dy;
-      if (js < 0 || js >= ny) continue;
+      const int js = j * k + r.dy;
+      if (js < 0 || js >= fny) continue;
       const auto& w = windows.at({r.lo, r.hi});
-      const std::size_t src = static_cast<std::size_t>(js) * static_cast<std::size_t>(nx);
+      const std::size_t src = static_cast<std::size_t>(js) * static_cast<std::size_t>(fnx);
       const std::size_t dst = jr * static_cast<std::size_t>(nx);
       for (int i = 0; i < nx; ++i) {
         const auto ii = static_cast<std::size_t>(i);
-        out[dst + ii] = std::max(out[dst + ii], w[src + ii]);
+        out[dst + ii] = std::max(out[dst + ii], w[src + static_cast<std::size_t>(i * k)]);
       }
     }
   });
@@ -144,10 +149,20 @@ Reach compute_reach(const VoxelModel& m, double tool_radius_mm, double allowance
   if (rule == OffsetRule::kDisk) {
     // Projection (2.3.2) is implicit: a cell's height is the top of all the part over it,
     // so a layer is blocked under any material above it.
+    const int k = m.top_sub;
     r.base = m.cell_top;
-    r.centre = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 0, 0), threads);
-    r.link_x = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 1, 0), threads);
-    r.link_y = dilate(r.base, m.nx, m.ny, segment_stencil(r.radius_mm, m.cell_mm, 0, 1), threads);
+    r.base_nx = m.nx * k;
+    r.base_ny = m.ny * k;
+    r.base_square_mm = m.cell_mm / k;
+    r.base_origin = m.origin - Vec2{0.5 * m.cell_mm, 0.5 * m.cell_mm} +
+                    Vec2{0.5 * r.base_square_mm, 0.5 * r.base_square_mm};
+    auto grow = [&](int sx, int sy) {
+      return dilate(r.base, r.base_nx, r.base_ny, k,
+                    segment_stencil(r.radius_mm, r.base_square_mm, k, sx, sy), threads);
+    };
+    r.centre = grow(0, 0);
+    r.link_x = grow(1, 0);
+    r.link_y = grow(0, 1);
     return r;
   }
   // Seed 003 Eq. (3.1) on the centre-ray voxels, projected by taking each ray's top.
@@ -161,10 +176,14 @@ Reach compute_reach(const VoxelModel& m, double tool_radius_mm, double allowance
   std::vector<StencilRow> square;
   for (int dy = -n0; dy <= n0; ++dy)
     square.push_back({dy, -n0, n0});
-  r.centre = dilate(r.base, m.nx, m.ny, square, threads);
+  r.base_nx = m.nx;
+  r.base_ny = m.ny;
+  r.base_square_mm = m.cell_mm;
+  r.base_origin = m.origin;
+  r.centre = dilate(r.base, m.nx, m.ny, 1, square, threads);
   // The paper checks only the voxels the tool stands on.
-  r.link_x = dilate(r.centre, m.nx, m.ny, {{0, 0, 1}}, threads);
-  r.link_y = dilate(r.centre, m.nx, m.ny, {{0, 0, 0}, {1, 0, 0}}, threads);
+  r.link_x = dilate(r.centre, m.nx, m.ny, 1, {{0, 0, 1}}, threads);
+  r.link_y = dilate(r.centre, m.nx, m.ny, 1, {{0, 0, 0}, {1, 0, 0}}, threads);
   return r;
 }
 
@@ -216,13 +235,19 @@ bool straight_move_clear(const VoxelModel& m, const Reach& reach, int k, Vec2 p,
     }
     return true;
   }
-  // Rows the stadium touches; in each, the columns its x-extent can reach.
+  // Rows of top squares the stadium touches; in each, the columns its x-extent can reach.
   const double rad = reach.radius_mm;
-  const int j0 = std::max(0, cell_of(std::min(p.y, q.y) - rad, m.origin.y) - 1);
-  const int j1 = std::min(m.ny - 1, cell_of(std::max(p.y, q.y) + rad, m.origin.y) + 1);
+  const double sq = reach.base_square_mm;
+  const Vec2 o = reach.base_origin;
+  auto square_of = [&](double v, double org) {
+    return static_cast<int>(std::floor((v - org) / sq + 0.5));
+  };
+  const int j0 = std::max(0, square_of(std::min(p.y, q.y) - rad, o.y) - 1);
+  const int j1 = std::min(reach.base_ny - 1, square_of(std::max(p.y, q.y) + rad, o.y) + 1);
+  const auto bnx = static_cast<std::size_t>(reach.base_nx);
   for (int j = j0; j <= j1; ++j) {
-    const double yc = m.origin.y + j * c;
-    const double ylo = yc - 0.5 * c - rad, yhi = yc + 0.5 * c + rad;
+    const double yc = o.y + j * sq;
+    const double ylo = yc - 0.5 * sq - rad, yhi = yc + 0.5 * sq + rad;
     // x-range of the segment within the band [ylo, yhi].
     double xa, xb;
     if (p.y == q.y) {
@@ -239,12 +264,13 @@ bool straight_move_clear(const VoxelModel& m, const Reach& reach, int k, Vec2 p,
       xa = std::min(x0, x1);
       xb = std::max(x0, x1);
     }
-    const int i0 = std::max(0, cell_of(xa - rad, m.origin.x) - 1);
-    const int i1 = std::min(m.nx - 1, cell_of(xb + rad, m.origin.x) + 1);
+    const int i0 = std::max(0, square_of(xa - rad, o.x) - 1);
+    const int i1 = std::min(reach.base_nx - 1, square_of(xb + rad, o.x) + 1);
+    const std::size_t row = static_cast<std::size_t>(j) * bnx;
     for (int i = i0; i <= i1; ++i) {
-      if (reach.base[m.column(i, j)] < thr) continue;
-      const Vec2 ctr = m.centre(i, j);
-      const Vec2 h{0.5 * c, 0.5 * c};
+      if (reach.base[row + static_cast<std::size_t>(i)] < thr) continue;
+      const Vec2 ctr = o + Vec2{i * sq, j * sq};
+      const Vec2 h{0.5 * sq, 0.5 * sq};
       if (segment_square_distance(p, q, ctr - h, ctr + h) < rad * (1.0 + 1e-12) + 1e-9) {
         return false;
       }

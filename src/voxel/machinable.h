@@ -21,9 +21,13 @@ struct Reach {
   /// Highest part point that the tool (grown by the allowance) can touch: standing at the
   /// cell centre, moving to the +x neighbour, moving to the +y neighbour. -inf = none.
   std::vector<double> centre, link_x, link_y;
-  /// The base heights the reach was grown from (exact cell tops, or the centre-ray tops of
-  /// the paper's rule), used to test arbitrary straight links.
+  /// The base heights the reach was grown from (exact tops of the top squares, or the
+  /// centre-ray tops of the paper's rule), used to test arbitrary straight links: a grid
+  /// of base_nx x base_ny squares of base_square_mm, square (0, 0) centred at base_origin.
   std::vector<double> base;
+  int base_nx = 0, base_ny = 0;
+  double base_square_mm = 0.0;
+  Vec2 base_origin;
   double radius_mm = 0.0;  ///< D/2 + allowance
   double allowance_mm = 0.0;
   OffsetRule rule = OffsetRule::kDisk;

@@ -20,45 +20,6 @@ namespace swarf {
 using voxel_detail::CellPath;
 using voxel_detail::Reach;
 
-std::string_view rough_sequence_name(RoughSequence s) {
-  switch (s) {
-    case RoughSequence::kZigzag:
-      return "zigzag";
-    case RoughSequence::kTrappedArea:
-      return "none";
-    case RoughSequence::kGa:
-      return "ga";
-  }
-  return "?";
-}
-
-Result<RoughSequence> parse_rough_sequence(std::string_view name) {
-  if (name == "zigzag") return RoughSequence::kZigzag;
-  if (name == "none" || name == "ta") return RoughSequence::kTrappedArea;
-  if (name == "ga") return RoughSequence::kGa;
-  return bad_parameter("unknown sequence '" + std::string(name) + "' (zigzag, none or ga)");
-}
-
-Status validate(const RoughParams& p) {
-  if (!(p.tool_diameter_mm > 0.0)) return bad_parameter("tool diameter must be > 0 mm");
-  if (!(p.stepover_mm > 0.0) || p.stepover_mm > p.tool_diameter_mm) {
-    return bad_parameter("stepover " + std::to_string(p.stepover_mm) +
-                         " mm must be in (0, tool diameter " + std::to_string(p.tool_diameter_mm) +
-                         " mm]: wider lines leave ridges");
-  }
-  if (!(p.stepdown_mm > 0.0)) return bad_parameter("stepdown must be > 0 mm");
-  if (!(p.stock_to_leave_mm >= 0.0)) return bad_parameter("stock to leave must be >= 0 mm");
-  if (!(p.margin_mm >= 0.0) || !(p.top_margin_mm >= 0.0)) {
-    return bad_parameter("stock margins must be >= 0 mm");
-  }
-  if (!(p.clearance_mm > 0.0)) return bad_parameter("clearance must be > 0 mm");
-  if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0)) {
-    return bad_parameter("feed rates must be > 0 mm/min");
-  }
-  if (!(p.lift_penalty_mm >= 0.0)) return bad_parameter("lift penalty must be >= 0 mm");
-  return validate(p.ga);
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -69,6 +30,8 @@ double seconds_since(Clock::time_point t0) {
 // Rapids stop this far above the layer they plunge into (the previous layer's floor is
 // clear there, or the stock top for the first layer).
 constexpr double kApproachMm = 1.0;
+// Largest side of the squares the exact part tops are kept on (up to 4 per cell side).
+constexpr double kTopSquareMm = 2.0;
 // Cell visits the true-cost refinement may spend per layer (some 5 ms) and in all.
 constexpr double kDryRunCellBudget = 2e6;
 constexpr double kDryRunTotalBudget = 1.5e7;
@@ -384,7 +347,8 @@ class Builder {
     return in;
   }
 
-  // The GA on an instance, with start costs from where the tool is now.
+  // Seed 003 2.5: the GA plus local search on an instance, with start costs from where
+  // the tool is now.
   TwoEndsTour solve(const Layer& L, TwoEndsInstance& in) const {
     in.start_cost.clear();
     if (has_pos_) {
@@ -686,6 +650,9 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   vo.margin_mm = p.margin_mm;
   vo.top_margin_mm = p.top_margin_mm;
   vo.repair_open = p.repair_open_mesh;
+  // Part tops on squares of about 2 mm or less: the offset is then conservative by that
+  // much instead of by a whole stepover (more machinable cells near walls).
+  vo.top_subdivisions = std::clamp(static_cast<int>(std::ceil(p.stepover_mm / kTopSquareMm)), 1, 4);
   // Seed 003 3.1.1 without re-clamping the part: part and stock are turned by -angle so
   // that the grid's x axis runs along the wanted feed direction, and the toolpath is turned
   // back at the end. Cells outside the turned stock hold nothing to cut.
@@ -780,29 +747,6 @@ Result<RoughResult> rough(const Mesh& part, const RoughParams& p, const Context&
   measure(tp, res.metrics);
   res.timings.total_s = seconds_since(t0);
   return res;
-}
-
-Result<OrientationResult> rough_orientations(const Mesh& part, const RoughParams& p,
-                                             const std::vector<double>& angles_deg,
-                                             const Context& ctx) {
-  if (angles_deg.empty()) return bad_parameter("orientation study: no angle given");
-  OrientationResult out;
-  for (double a : angles_deg) {
-    if (!std::isfinite(a)) return bad_parameter("orientation study: angle is not finite");
-    RoughParams q = p;
-    q.zigzag_angle_deg = a;
-    auto r = rough(part, q, ctx);
-    if (!r.ok()) return r.status().with_context("feed angle " + std::to_string(a) + " deg");
-    out.angles_deg.push_back(a);
-    out.metrics.push_back(r->metrics);
-    const bool better = out.metrics.size() == 1 ||
-                        r->metrics.total_length_mm < out.metrics[out.best].total_length_mm;
-    if (better) {
-      out.best = out.metrics.size() - 1;
-      out.best_result = std::move(r).value();
-    }
-  }
-  return out;
 }
 
 }  // namespace swarf

@@ -93,6 +93,9 @@ Status validate(const VoxelizeOptions& o) {
   if (!(o.margin_mm >= 0.0) || !(o.top_margin_mm >= 0.0)) {
     return bad_parameter("stock margins must be >= 0 mm");
   }
+  if (o.top_subdivisions < 1 || o.top_subdivisions > 16) {
+    return bad_parameter("top subdivisions must be in [1, 16]");
+  }
   return {};
 }
 
@@ -211,7 +214,14 @@ Result<VoxelModel> voxelize(const Mesh& part, const VoxelizeOptions& opt, const 
   const auto nx = static_cast<std::size_t>(m.nx);
   std::vector<std::vector<std::pair<int, double>>> hits(static_cast<std::size_t>(m.ny));
   std::vector<std::size_t> repaired(static_cast<std::size_t>(m.ny), 0);
-  m.cell_top.assign(nx * static_cast<std::size_t>(m.ny), kNegInf);
+  // Top squares: each cell split into sub x sub squares of f = cell_mm / sub.
+  const int sub = opt.top_subdivisions;
+  const double f = c / sub;
+  const int fnx = m.nx * sub;
+  const auto fnxs = static_cast<std::size_t>(fnx);
+  const double x_edge = m.origin.x - 0.5 * c, y_edge = m.origin.y - 0.5 * c;
+  m.top_sub = sub;
+  m.cell_top.assign(fnxs * static_cast<std::size_t>(m.ny * sub), kNegInf);
   parallel_for(static_cast<std::size_t>(m.ny), ctx.threads, [&](std::size_t jr) {
     const int j = static_cast<int>(jr);
     const double yc = m.origin.y + j * c;
@@ -233,41 +243,44 @@ Result<VoxelModel> voxelize(const Mesh& part, const VoxelizeOptions& opt, const 
           if (inside) row_hits.emplace_back(i, plane_z(a, b, d, p));
         }
       }
-      // Exact top over each cell square: clip to the row's band, then to each column.
-      // Fast path: a triangle inside one cell's square (fine meshes) just lifts that cell
-      // to its highest corner.
-      {
-        const double xlo = std::min({a.x, b.x, d.x}), xhi = std::max({a.x, b.x, d.x});
-        const double ylo = std::min({a.y, b.y, d.y}), yhi = std::max({a.y, b.y, d.y});
-        const int ia = static_cast<int>(std::floor((xlo - m.origin.x) / c + 0.5));
-        const int ib = static_cast<int>(std::floor((xhi - m.origin.x) / c + 0.5));
-        const double xc = m.origin.x + ia * c;
-        if (ia == ib && ia >= 0 && ia < m.nx && xlo > xc - 0.5 * c && xhi < xc + 0.5 * c &&
-            ylo > yc - 0.5 * c && yhi < yc + 0.5 * c) {
-          double& top = m.cell_top[jr * nx + static_cast<std::size_t>(ia)];
-          top = std::max({top, a.z, b.z, d.z});
-          continue;
+      // Exact top over each top square (cell_mm / k wide): clip to the square's row band,
+      // then to each column. Fast path: a triangle inside one square (fine meshes) just
+      // lifts that square to its highest corner.
+      const double xlo = std::min({a.x, b.x, d.x}), xhi = std::max({a.x, b.x, d.x});
+      const double ylo = std::min({a.y, b.y, d.y}), yhi = std::max({a.y, b.y, d.y});
+      const int fa = static_cast<int>(std::floor((xlo - x_edge) / f));
+      const int fb = static_cast<int>(std::floor((xhi - x_edge) / f));
+      const int ga = static_cast<int>(std::floor((ylo - y_edge) / f));
+      const int gb = static_cast<int>(std::floor((yhi - y_edge) / f));
+      if (fa == fb && ga == gb && fa >= 0 && fa < fnx && ga >= j * sub && ga < (j + 1) * sub &&
+          xlo > x_edge + fa * f && xhi < x_edge + (fa + 1) * f && ylo > y_edge + ga * f &&
+          yhi < y_edge + (ga + 1) * f) {
+        double& top =
+            m.cell_top[static_cast<std::size_t>(ga) * fnxs + static_cast<std::size_t>(fa)];
+        top = std::max({top, a.z, b.z, d.z});
+        continue;
+      }
+      for (int g = std::max(ga, j * sub); g <= std::min(gb, (j + 1) * sub - 1); ++g) {
+        poly.assign({a, b, d});
+        clip(poly, scratch, 1, y_edge + g * f, 1.0);
+        if (!poly.empty()) clip(poly, scratch, 1, y_edge + (g + 1) * f, -1.0);
+        if (poly.empty()) continue;
+        double pxlo = poly[0].x, pxhi = poly[0].x;
+        for (const Vec3& v : poly) {
+          pxlo = std::min(pxlo, v.x);
+          pxhi = std::max(pxhi, v.x);
         }
-      }
-      poly.assign({a, b, d});
-      clip(poly, scratch, 1, yc - 0.5 * c, 1.0);
-      if (!poly.empty()) clip(poly, scratch, 1, yc + 0.5 * c, -1.0);
-      if (poly.empty()) continue;
-      double xlo = poly[0].x, xhi = poly[0].x;
-      for (const Vec3& v : poly) {
-        xlo = std::min(xlo, v.x);
-        xhi = std::max(xhi, v.x);
-      }
-      const int i0 = std::max(0, static_cast<int>(std::floor((xlo - m.origin.x) / c + 0.5)));
-      const int i1 = std::min(m.nx - 1, static_cast<int>(std::floor((xhi - m.origin.x) / c + 0.5)));
-      for (int i = i0; i <= i1; ++i) {
-        const double xc = m.origin.x + i * c;
-        cell = poly;
-        clip(cell, scratch, 0, xc - 0.5 * c, 1.0);
-        if (!cell.empty()) clip(cell, scratch, 0, xc + 0.5 * c, -1.0);
-        double& top = m.cell_top[jr * nx + static_cast<std::size_t>(i)];
-        for (const Vec3& v : cell)
-          top = std::max(top, v.z);
+        const int i0 = std::max(0, static_cast<int>(std::floor((pxlo - x_edge) / f)));
+        const int i1 = std::min(fnx - 1, static_cast<int>(std::floor((pxhi - x_edge) / f)));
+        for (int i = i0; i <= i1; ++i) {
+          cell = poly;
+          clip(cell, scratch, 0, x_edge + i * f, 1.0);
+          if (!cell.empty()) clip(cell, scratch, 0, x_edge + (i + 1) * f, -1.0);
+          double& top =
+              m.cell_top[static_cast<std::size_t>(g) * fnxs + static_cast<std::size_t>(i)];
+          for (const Vec3& v : cell)
+            top = std::max(top, v.z);
+        }
       }
     }
     std::sort(row_hits.begin(), row_hits.end());

@@ -21,12 +21,12 @@ TEST(ContourParallel, LWithIslandsHasNoGougeAndLeavesOnlyUnreachableMaterial) {
   cp.depth_mm = 3.0;
   auto r = contour_parallel_pocket(*p, t, cp);
   ASSERT_TRUE(r.ok()) << r.status().to_string();
-  const auto s = testing::sweep_check(p->region, 3.0, r->toolpath, 36.87, 0.05, 0.2);
+  const auto s = testing::sweep_check(p->region, 3.0, r->toolpath, 36.87, 0.08, 0.25);
   std::printf(
       "  contour L: gouge %.3f mm, residual %.2f mm2, rings %d, retracts %d, max eng %.0f\n",
       s.max_gouge_mm, s.residual_mm2, r->rings, r->retracts_per_layer, s.max_engagement_deg);
   // Offsets are exact polygons: any gouge is the checker's pixel at most.
-  EXPECT_LE(s.max_gouge_mm, 0.05);
+  EXPECT_LE(s.max_gouge_mm, 0.08);
   EXPECT_LE(s.residual_mm2, 0.5);
 }
 

@@ -1,4 +1,4 @@
-#include "pocket/sweep_checker.h"
+#include "sweep_checker.h"
 
 #include <algorithm>
 #include <cmath>

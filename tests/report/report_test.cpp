@@ -64,7 +64,8 @@ TEST(ToolpathCsv, OneRowPerMoveWithKinds) {
   int rows = 0;
   std::getline(in, line);
   EXPECT_EQ(line, "index,kind,x,y,z,feed,cutting,engagement_deg,force_n");
-  while (std::getline(in, line)) ++rows;
+  while (std::getline(in, line))
+    ++rows;
   EXPECT_EQ(rows, 6);
   EXPECT_NE(csv.find(",plunge,"), std::string::npos);
   EXPECT_NE(csv.find(",arc,"), std::string::npos);

@@ -212,6 +212,13 @@ TEST(Simulate, ScheduledFeedKeepsThePeakUnderTheLimit) {
   const FeedSchedule fs = schedule_feed(slot_path(feed), *r1, fo);
   EXPECT_LT(fs.path.moves[2].feed_mm_min, feed);
   EXPECT_GT(fs.time_after_s, fs.time_before_s);
+  // A chip-load limit caps every cutting feed.
+  FeedScheduleOptions chip = fo;
+  chip.max_force_n = 1e6;
+  chip.max_chip_mm = 0.05;
+  chip.spindle_rpm = 3000.0;
+  chip.flutes = 4;
+  EXPECT_NEAR(schedule_feed(slot_path(feed), *r1, chip).path.moves[2].feed_mm_min, 600.0, 1e-9);
   // Re-simulated with the new feeds on fresh stock, the peak meets the limit.
   Stock s2 = block();
   const auto r2 = simulate(s2, fs.path, flat10(), al7075(), opt);

@@ -41,6 +41,21 @@ TEST(StockRemoval, BlockVolumeIsExact) {
   EXPECT_FALSE(s.inside({-0.01, 1, 1}, EngagementRule::kAny));
 }
 
+TEST(StockRemoval, BlockOffThePitchGridKeepsItsVolume) {
+  // 10.05 mm tall at a 0.1 mm pitch: the top cell is half a pitch thick.
+  auto s = Stock::block({{0, 0, 0}, {10.05, 5.03, 10.05}}, kPitch);
+  ASSERT_TRUE(s.ok());
+  const double v = 10.05 * 5.03 * 10.05;
+  EXPECT_NEAR(s->volume_mm3(), v, 1e-9 * v);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(s->volume_mm3(static_cast<Axis>(a)), v, 1e-9 * v);
+  EXPECT_FALSE(s->inside({5, 2, 10.07}, EngagementRule::kAny));
+  // Facing off the top 0.55 mm with a big flat end mill.
+  const Vec3 tips[2] = {{-20, 2.5, 9.5}, {30, 2.5, 9.5}};
+  const Removal rm = s->remove(flat(40), tips);
+  expect_volume(rm, 10.05 * 5.03 * 0.55);
+}
+
 TEST(StockRemoval, FlatSlot) {
   Stock s = block();
   const double r = 5, len = 30, depth = 2;
@@ -74,6 +89,40 @@ TEST(StockRemoval, FlatRampFromTheTopFace) {
   // Per line y = const: a triangle under the ramp (len * drop / 2) and the full-depth end
   // disk's chord (2 s * drop); integrated over the tool width.
   const double want = len * drop / 2 * 2 * r + drop * 2 * (kPi * r * r / 2);
+  expect_volume(rm, want);
+}
+
+TEST(StockRemoval, BallRampEnteringFromTheAir) {
+  // A ball ramping from above the stock into it: checked against a direct integration of
+  // the depth under the top face, depth(x, y) = 20 - min over t of (z(t) + H(rho)), with H
+  // the ball's height at distance rho from its axis (convex in t: ternary search).
+  Stock s = block();
+  const double r = 4;
+  const Vec3 a{10, 20, 21}, b{40, 20, 17};
+  const Vec3 tips[2] = {a, b};
+  const Removal rm = s.remove(ball(2 * r), tips);
+  double want = 0.0;
+  const double h = 0.05;
+  for (double x = 5 + h / 2; x < 46; x += h) {
+    for (double y = 15.5 + h / 2; y < 24.5; y += h) {
+      auto zt = [&](double t) {
+        const double cx = a.x + (b.x - a.x) * t, cz = a.z + (b.z - a.z) * t;
+        const double rho = std::hypot(x - cx, y - 20);
+        return rho >= r ? 1e9 + rho : cz + r - std::sqrt(r * r - rho * rho);
+      };
+      double lo = 0, hi = 1;
+      for (int k = 0; k < 50; ++k) {
+        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        if (zt(m1) < zt(m2)) {
+          hi = m2;
+        } else {
+          lo = m1;
+        }
+      }
+      const double zl = std::min({zt(0.0), zt(1.0), zt(0.5 * (lo + hi))});
+      if (zl < 20) want += (20 - zl) * h * h;
+    }
+  }
   expect_volume(rm, want);
 }
 

@@ -30,11 +30,16 @@ TEST(ToolSpec, RejectsNonsenseWithAMessageNamingTheFault) {
     const char* spec;
     const char* needle;
   } cases[] = {
-      {"flat", "KIND:DIAMETER"},          {"drill:5", "unknown kind"},
-      {"flat:abc", "not a number"},       {"flat:-3", "positive"},
-      {"bull:10", "needs a corner radius"}, {"bull:10:5", "below the tool radius"},
-      {"ball:8:3", "half its diameter"},  {"flat:10:1", "no corner radius"},
-      {"flat:nan", "not a number"},       {"flat:10:1:2", "KIND:DIAMETER"},
+      {"flat", "KIND:DIAMETER"},
+      {"drill:5", "unknown kind"},
+      {"flat:abc", "not a number"},
+      {"flat:-3", "positive"},
+      {"bull:10", "needs a corner radius"},
+      {"bull:10:5", "below the tool radius"},
+      {"ball:8:3", "half its diameter"},
+      {"flat:10:1", "no corner radius"},
+      {"flat:nan", "not a number"},
+      {"flat:10:1:2", "KIND:DIAMETER"},
   };
   for (const Case& c : cases) {
     Result<Tool> t = parse_tool_spec(c.spec);
@@ -96,7 +101,8 @@ TEST(ToolLibrary, RejectsMalformedFilesNamingThePlace) {
       {R"({"tools": [{"number": 1, "kind": "flat"}]})", "tools[0]: missing \"diameter\""},
       {R"({"tools": [{"number": 1, "kind": "saw", "diameter": 3}]})", "unknown kind"},
       {R"({"tools": [{"number": 1, "kind": "flat", "diameter": 3},
-                     {"number": 1, "kind": "flat", "diameter": 4}]})", "appears twice"},
+                     {"number": 1, "kind": "flat", "diameter": 4}]})",
+       "appears twice"},
       {R"({"tools": [{"number": 1, "kind": "flat", "diameter": "3"}]})", "must be a number"},
       {R"({"tools": [{"number": 2, "kind": "flat", "diameter": -1}]})", "tools[0]: tool: diameter"},
   };
@@ -105,8 +111,7 @@ TEST(ToolLibrary, RejectsMalformedFilesNamingThePlace) {
     ASSERT_FALSE(lib.ok()) << c.json;
     EXPECT_EQ(lib.status().code(), Error::kBadInput);
     EXPECT_NE(lib.status().message().find("lib.json"), std::string::npos);
-    EXPECT_NE(lib.status().message().find(c.needle), std::string::npos)
-        << lib.status().message();
+    EXPECT_NE(lib.status().message().find(c.needle), std::string::npos) << lib.status().message();
   }
 }
 

@@ -59,6 +59,19 @@ TEST(RoughCli, FanucProgramReadBackKeepsOffTheKirimotoPocket) {
   EXPECT_EQ(compute_metrics(*tp).lift_offs, summary["lift_offs"].get<std::size_t>());
 }
 
+TEST(RoughCli, StockBoxIsParsedAndChecked) {
+  const std::string stl = std::string(SWARF_TEST_DATA_DIR) + "/voxel/kirimoto_pocket-test.stl";
+  const auto ok = testing::run_swarf("rough " + stl +
+                                     " --tool flat:10 --stepover 5 --stock box:-60,-60,0,60,60,20");
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  const auto malformed = testing::run_swarf("rough " + stl + " --tool flat:10 --stock box:1,2");
+  EXPECT_EQ(malformed.status, 2) << malformed.out;
+  // A stock that does not hold the part's footprint.
+  const auto small =
+      testing::run_swarf("rough " + stl + " --tool flat:10 --stock box:-10,-10,0,10,10,20");
+  EXPECT_EQ(small.status, 2) << small.out;
+}
+
 TEST(RoughCli, OpenMeshIsRefusedWithExitStatus2) {
   const auto run = testing::run_swarf("rough " + std::string(SWARF_SOURCE_DIR) +
                                       "/tests/data/voxel/open_box.stl --tool flat:10");

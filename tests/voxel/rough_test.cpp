@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "swarf/gcode/gcode.h"
 #include "swarf/mesh/generate.h"
 #include "swarf/toolpath/metrics.h"
 #include "swarf/voxel/rough.h"
@@ -236,6 +237,29 @@ TEST(Rough, OrientationStudyPicksTheShortestPath) {
       at = mv.end;
     }
     EXPECT_GT(along, lines / 2) << a;
+  }
+}
+
+TEST(Rough, IsoAndFanucProgramsReadBackToTheSamePath) {
+  const Mesh part = voxel_test::block_with_bosses(150.0, 20.0, 30.0, 8.0);
+  auto r = rough(part, case_study_1());
+  ASSERT_TRUE(r.ok());
+  for (Dialect d : {Dialect::kIso, Dialect::kFanuc}) {
+    GcodeOptions go;
+    go.dialect = d;
+    const std::string program = write_gcode(r->toolpath, go);
+    GcodeReadOptions ro;
+    ro.start = {0.0, 0.0, 100.0};
+    auto back = parse_gcode(program, "rough.nc", ro);
+    ASSERT_TRUE(back.ok()) << back.status().to_string();
+    // Every position of our path appears, in order, in the program read back.
+    std::size_t at = 0;
+    for (const Move& mv : back->moves) {
+      if (at < r->toolpath.moves.size() && distance(mv.end, r->toolpath.moves[at].end) < 1e-3) {
+        ++at;
+      }
+    }
+    EXPECT_EQ(at, r->toolpath.moves.size()) << dialect_name(d);
   }
 }
 

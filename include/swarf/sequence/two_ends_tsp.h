@@ -70,6 +70,9 @@ struct SequenceOptions {
   double mutation_rate = 0.8;
   int elite = 2;             ///< best tours copied unchanged into the next generation
   bool local_search = true;  ///< 2-opt and or-opt with orientation flips after the GA
+  /// Kicks of the iterated local search after the descent (fewer on large instances: at
+  /// most about 4e6 / n^3).
+  int kicks = 300;
   std::uint64_t seed = 1;
 };
 
@@ -87,6 +90,14 @@ void improve_two_ends_tour(const TwoEndsInstance& instance, TwoEndsTour& tour);
 
 /// Greedy nearest-neighbour tour: from the start, always the cheapest unvisited entry.
 TwoEndsTour nearest_neighbour_tour(const TwoEndsInstance& instance);
+
+/// Regions up to which solve_two_ends uses the exact solver (about 1 ms there).
+inline constexpr int kExactUpTo = 10;
+
+/// What a caller wants: the exact optimum up to kExactUpTo regions, the GA plus local
+/// search above.
+Result<TwoEndsTour> solve_two_ends(const TwoEndsInstance& instance,
+                                   const SequenceOptions& options = {});
 
 /// Largest instance solve_two_ends_exact accepts.
 inline constexpr int kMaxExactRegions = 16;

@@ -129,8 +129,11 @@ struct ElementTable {
   std::size_t levels_used = 0;
 };
 /// `max_levels` limits the evaluation to the lowest levels (those that can reach material).
+/// Levels are evaluated on `threads` threads (0: all cores; `inside` must then be safe to
+/// call concurrently); the table does not depend on the thread count.
 ElementTable element_table(const ForceModel& model, double feed_per_tooth_mm, Vec3 feed_dir,
-                           const EngagementTest& inside, std::size_t max_levels = SIZE_MAX);
+                           const EngagementTest& inside, std::size_t max_levels = SIZE_MAX,
+                           int threads = 1);
 
 /// Total force (Eq. 5) at rotation step `step`: the sum over levels and flutes.
 Vec3 total_force(const ForceModel& model, const ElementTable& table, long step);

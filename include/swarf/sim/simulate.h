@@ -94,6 +94,10 @@ struct FeedScheduleOptions {
   double max_increase = 2.0;
   /// Never above this feed, mm/min (0: no cap).
   double max_feed_mm_min = 0.0;
+  /// Chip-load limit, mm per tooth (0: none): no feed above max_chip x rpm x flutes.
+  double max_chip_mm = 0.0;
+  double spindle_rpm = 0.0;  ///< for the chip-load limit
+  int flutes = 2;            ///< for the chip-load limit
 };
 
 struct FeedSchedule {

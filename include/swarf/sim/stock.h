@@ -97,16 +97,18 @@ class Stock {
   Removal remove(const ToolSolid& tool, std::span<const Vec3> tips,
                  const Context& ctx = default_context());
 
-  /// Height map of the material's top, from the yz slices, at the given cell size.
+  /// Height map of the material's top, from the yz slices, at the given cell size (empty
+  /// for a cell that is not positive or would give more than 1e8 cells).
   HeightMap height_map(double cell_mm) const;
 
  private:
   struct SliceIndex {
     double v0 = 0.0, row_h = 1.0;
     std::vector<std::uint32_t> row_start;      ///< rows + 1 offsets into edges
-    std::vector<std::array<double, 4>> edges;  ///< (ua, va, ub, vb) per row, duplicated
+    std::vector<std::array<double, 4>> edges;  ///< (ua, va, vb, du/dv) per row, duplicated
   };
   void rebuild_index(int family, std::size_t slice);
+  double thickness(int family, std::size_t slice) const;
   bool inside_slice(int family, std::size_t slice, Vec2 uv) const;
 
   TriSliceModel model_;

@@ -67,7 +67,13 @@ struct RoughParams {
   double zigzag_angle_deg = 0.0;
   OffsetRule offset = OffsetRule::kDisk;
   RoughSequence sequence = RoughSequence::kGa;
-  SequenceOptions ga;             ///< GA settings (seed included)
+  /// GA settings (seed included). Fewer kicks than the stand-alone default: the layer's
+  /// order is refined on the true emitted cost afterwards anyway.
+  SequenceOptions ga = [] {
+    SequenceOptions o;
+    o.kicks = 30;
+    return o;
+  }();
   bool repair_open_mesh = false;  ///< see VoxelizeOptions::repair_open
 };
 

@@ -29,6 +29,9 @@ struct VoxelizeOptions {
   /// lowest to its highest crossing) with a warning. The exact cell tops, which decide
   /// where the tool may go, come from the triangles and need no closed mesh.
   bool repair_open = false;
+  /// The exact part tops are kept on squares of cell_mm / top_subdivisions, so that the
+  /// tool offset is conservative by that much instead of by a whole cell.
+  int top_subdivisions = 1;
 };
 
 Status validate(const VoxelizeOptions& options);
@@ -45,9 +48,12 @@ struct VoxelModel {
   /// crossings[offsets[c] .. offsets[c+1])).
   std::vector<std::uint32_t> offsets;
   std::vector<double> crossings;
-  /// Highest point of the part over the closed square of each cell, exact (the triangles
-  /// clipped to the square); -infinity where the part does not reach the cell. This is what
-  /// makes the model conservative between column centres.
+  /// Highest point of the part over each closed top square, exact (the triangles clipped
+  /// to the square); -infinity where the part does not reach it. Top squares are cells
+  /// split top_sub x top_sub ways: square (u, v) (index v * nx * top_sub + u) spans
+  /// x from origin.x - cell_mm / 2 + u * cell_mm / top_sub, one top_sub-th of a cell wide.
+  /// This is what makes the model conservative between column centres.
+  int top_sub = 1;
   std::vector<double> cell_top;
   std::vector<std::string> warnings;
 

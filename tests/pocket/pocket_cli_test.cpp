@@ -1,0 +1,58 @@
+// `swarf pocket` end to end: the G-code it writes, read back by the G-code reader, swept by
+// the independent checker (the "high-resolution sweep of the final G-code").
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli/cli_test_util.h"
+#include "pocket/sweep_checker.h"
+#include "swarf/gcode/gcode.h"
+#include "swarf/pocket/pocket_input.h"
+
+namespace swarf {
+namespace {
+
+TEST(PocketCli, GcodeOfTheKirimotoPocketSweepsClean) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const auto r = testing::run_swarf("pocket " + in +
+                                    " --tool flat:10 --stepover 2 --depth 4 --stepdown 2"
+                                    " --dialect linuxcnc -o " +
+                                    dir.file("out.nc") + " --csv " + dir.file("steps.csv") +
+                                    " --report " + dir.file("rep"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* f :
+       {"rep/engagement.png", "rep/engagement.svg", "rep/summary.json", "steps.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir.file(f))) << f;
+  auto tp = read_gcode(dir.file("out.nc"));
+  ASSERT_TRUE(tp.ok()) << tp.status().to_string();
+  auto pocket = read_pocket(in);
+  ASSERT_TRUE(pocket.ok());
+  const auto s = testing::sweep_check(pocket->region, 5.0, *tp, 53.13, 0.1, 0.3);
+  EXPECT_LE(s.max_gouge_mm, 0.15 + 0.1);  // generator pixel (0.125) + checker pixel, rounded
+  EXPECT_LE(s.residual_mm2, 4 * 1.2);
+  EXPECT_EQ(s.slot_length_mm, 0.0);
+  EXPECT_GT(s.cutting_length_mm, 500.0);
+}
+
+TEST(PocketCli, OpenOutlineIsABadInputExitNamingTheFile) {
+  testing::TempDir dir;
+  dir.write("open.svg", "<svg><polyline points=\"0,0 10,0 10,10\"/></svg>");
+  const auto r = testing::run_swarf("pocket " + dir.file("open.svg") + " --tool flat:6 -o " +
+                                    dir.file("o.nc"));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("open.svg"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("o.nc")));
+}
+
+TEST(ContourCli, WritesGcode) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const auto r =
+      testing::run_swarf("contour " + in + " --tool flat:10 --stepover 2 -o " + dir.file("c.nc"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(read_gcode(dir.file("c.nc")).ok());
+}
+
+}  // namespace
+}  // namespace swarf
