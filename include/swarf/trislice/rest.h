@@ -30,7 +30,7 @@ struct RestOptions {
   ConvolutionOptions convolution{0.005, 1};
   /// Normal error the closing may make between slices, mm: neighbours are read every
   /// floor(sqrt(8 r tol) / ds) slices (offset.h bound ds'^2 / (8 r) <= tol). 0 = every slice.
-  double convolution_tolerance_mm = 0.001;
+  double convolution_tolerance_mm = 0.005;
 };
 Status validate(const RestOptions& o);
 
