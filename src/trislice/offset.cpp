@@ -24,7 +24,9 @@ PolygonSet convolve_slice(const SliceFamily& family, long level_index, double r_
   oo.arc_tolerance_mm = options.arc_tolerance_mm;
   if (r_mm >= 0.0) {
     std::vector<PolygonSet> parts;
-    for (long j = std::max(0L, i - nr); j <= std::min(n - 1, i + nr); ++j) {
+    const long m = std::max(1, options.neighbour_stride);
+    for (long j = i - (nr / m) * m; j <= i + nr; j += m) {
+      if (j < 0 || j >= n) continue;
       const PolygonSet& s = family.slices[static_cast<std::size_t>(j)];
       if (s.empty()) continue;
       const double dz = static_cast<double>(i - j) * ds;
@@ -39,10 +41,11 @@ PolygonSet convolve_slice(const SliceFamily& family, long level_index, double r_
   std::vector<PolygonSet> parts;
   // Nearest slices first: they are the most restrictive, so the running intersection
   // shrinks fast and later steps are cheap.
-  for (long k = 0; k <= nr; ++k) {
+  const long m = std::max(1, options.neighbour_stride);
+  for (long k = 0; k <= nr; k += m) {
     const long js[2] = {i - k, i + k};
-    for (int m = 0; m < (k == 0 ? 1 : 2); ++m) {
-      const long j = js[m];
+    for (int side = 0; side < (k == 0 ? 1 : 2); ++side) {
+      const long j = js[side];
       const PolygonSet& s = family.slices[static_cast<std::size_t>(j)];
       if (s.empty()) return {};
       const double dz = static_cast<double>(i - j) * ds;

@@ -12,6 +12,7 @@ namespace swarf {
 Status validate(const RestOptions& o) {
   if (!(o.tool_radius_mm > 0.0)) return bad_parameter("rest: tool radius must be positive");
   if (!(o.min_thickness_mm >= 0.0)) return bad_parameter("rest: min thickness must be >= 0");
+  if (!(o.convolution_tolerance_mm >= 0.0)) return bad_parameter("rest: negative tolerance");
   if (!(o.convolution.arc_tolerance_mm > 0.0))
     return bad_parameter("rest: arc tolerance must be positive");
   return {};
@@ -40,6 +41,12 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     }
     if (j0 > j1) continue;
     const long nr = static_cast<long>(std::ceil(o.tool_radius_mm / fam.pitch_mm - 1e-9));
+    ConvolutionOptions conv = o.convolution;
+    if (o.convolution_tolerance_mm > 0.0)
+      conv.neighbour_stride = std::max(
+          1, static_cast<int>(std::floor(
+                 std::sqrt(8.0 * o.tool_radius_mm * o.convolution_tolerance_mm) / fam.pitch_mm +
+                 1e-9)));
     const long base = lattice_index(fam, 0);
     SliceFamily inflated;
     inflated.axis = fam.axis;
@@ -48,8 +55,8 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     inflated.slices.resize(static_cast<std::size_t>(j1 - j0 + 1 + 2 * nr));
     parallel_for(inflated.slices.size(), ctx.threads, [&](std::size_t k) {
       if (ctx.cancelled()) return;
-      inflated.slices[k] = convolve_slice(fam, base + j0 - nr + static_cast<long>(k),
-                                          o.tool_radius_mm, o.convolution);
+      inflated.slices[k] =
+          convolve_slice(fam, base + j0 - nr + static_cast<long>(k), o.tool_radius_mm, conv);
     });
     res.first_level = fam.level(static_cast<std::size_t>(j0));
     res.slices.resize(static_cast<std::size_t>(j1 - j0 + 1));
@@ -58,8 +65,18 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
       const std::size_t j = static_cast<std::size_t>(j0) + k;
       // Shrink the inflated family back at slice j's own level, then subtract the part.
       const PolygonSet closed =
-          convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, o.convolution);
-      res.slices[k] = subtract(closed, fam.slices[j]);
+          convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, conv);
+      PolygonSet residue = subtract(closed, fam.slices[j]);
+      // Drop slivers thinner than min_thickness (an opening by half of it): the closing of a
+      // concave arc of exactly the tool radius leaves micrometre films along the arc, which a
+      // vertical thickness would count in full where the arc is steep.
+      if (o.min_thickness_mm > 0.0 && !residue.empty()) {
+        OffsetOptions oo;
+        oo.arc_tolerance_mm = conv.arc_tolerance_mm;
+        residue =
+            offset(offset(residue, -0.5 * o.min_thickness_mm, oo), 0.5 * o.min_thickness_mm, oo);
+      }
+      res.slices[k] = std::move(residue);
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
     ctx.report("unmachinable regions", (a + 1) / 3.0);
@@ -141,6 +158,44 @@ ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
       map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
     }
   }
+  // The xy family: the residue's vertical extent is the number of levels whose residue covers
+  // the cell centre, times the pitch. It covers every cell, so it votes everywhere.
+  const SliceFamily& fz = rest.families[static_cast<std::size_t>(Axis::kZ)];
+  if (fz.size() > 0) {
+    std::vector<double> own(ncell, 0.0);
+    std::vector<double> xs;
+    for (std::size_t l = 0; l < fz.size(); ++l) {
+      if (fz.slices[l].empty()) continue;
+      const Box2 pb = bounds(fz.slices[l]);
+      const int j0 =
+          std::max(0, static_cast<int>(std::floor((pb.min.y - map.origin.y) / map.cell_mm)));
+      const int j1 = std::min(
+          map.ny - 1, static_cast<int>(std::floor((pb.max.y - map.origin.y) / map.cell_mm)));
+      for (int j = j0; j <= j1; ++j) {
+        const double y = map.origin.y + (j + 0.5) * map.cell_mm;
+        xs.clear();
+        for (const Ring& ring : fz.slices[l].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 p0 = ring[k], p1 = ring[(k + 1) % ring.size()];
+            if ((p0.y <= y) == (p1.y <= y)) continue;
+            xs.push_back(p0.x + (y - p0.y) / (p1.y - p0.y) * (p1.x - p0.x));
+          }
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+          const int i0 =
+              std::max(0, static_cast<int>(std::ceil((xs[k] - map.origin.x) / map.cell_mm - 0.5)));
+          const int i1 = std::min(
+              map.nx - 1,
+              static_cast<int>(std::floor((xs[k + 1] - map.origin.x) / map.cell_mm - 0.5)));
+          for (int i = i0; i <= i1; ++i)
+            own[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
+                static_cast<std::size_t>(i)] += fz.pitch_mm;
+        }
+      }
+    }
+    for (std::size_t c = 0; c < ncell; ++c)
+      map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
+  }
   for (double& v : map.mm)
     v = std::max(v, 0.0);
   return map;
@@ -161,13 +216,24 @@ Image thickness_image(const ThicknessMap& map, double min_mm) {
 std::string residue_points_ply(const RestRegions& rest, double spacing_mm) {
   std::vector<Vec3> pts;
   const double h = spacing_mm > 0.0 ? spacing_mm : rest.pitch_mm;
+  std::vector<double> us;
   for (const SliceFamily& f : rest.families) {
     for (std::size_t j = 0; j < f.size(); ++j) {
-      for (const PolygonSet& part : connected_parts(f.slices[j])) {
-        const Box2 b = bounds(part);
-        for (double u = std::ceil(b.min.x / h) * h; u <= b.max.x; u += h)
-          for (double v = std::ceil(b.min.y / h) * h; v <= b.max.y; v += h)
-            if (contains(part, {u, v})) pts.push_back(from_plane({u, v}, f.level(j), f.axis));
+      if (f.slices[j].empty()) continue;
+      // Scanline fill of the residue in its plane: rows v = k h, crossings sorted in u.
+      const Box2 b = bounds(f.slices[j]);
+      for (double v = std::ceil(b.min.y / h) * h; v <= b.max.y; v += h) {
+        us.clear();
+        for (const Ring& ring : f.slices[j].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 p0 = ring[k], p1 = ring[(k + 1) % ring.size()];
+            if ((p0.y <= v) == (p1.y <= v)) continue;
+            us.push_back(p0.x + (v - p0.y) / (p1.y - p0.y) * (p1.x - p0.x));
+          }
+        std::sort(us.begin(), us.end());
+        for (std::size_t k = 0; k + 1 < us.size(); k += 2)
+          for (double u = std::ceil(us[k] / h) * h; u <= us[k + 1]; u += h)
+            pts.push_back(from_plane({u, v}, f.level(j), f.axis));
       }
     }
   }

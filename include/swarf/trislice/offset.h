@@ -31,6 +31,10 @@ namespace swarf {
 struct ConvolutionOptions {
   /// 2D offsets: largest gap between a round join and its polygon, mm.
   double arc_tolerance_mm = 0.001;
+  /// Use only the neighbours i +- k * stride. Eq. (1) then samples the solid every
+  /// stride * ds, with the error bound above for that spacing; the cost falls by the stride.
+  /// 1 (every slice) is the paper's method.
+  int neighbour_stride = 1;
 };
 
 /// Eq. (1) for one slice: the family offset by r_mm (> 0 inflates, < 0 shrinks) cut at the

@@ -17,15 +17,20 @@ namespace swarf {
 
 struct RestOptions {
   double tool_radius_mm = 4.0;
-  /// Families to analyse, indexed by Axis. The vertical ones (x, y) give the top-view map.
-  std::array<bool, 3> families{true, true, false};
-  /// Residues thinner than this (vertically, in the map and the statistics) are ignored:
-  /// the faceting of the mesh and the arc tolerance leave slivers of a few micrometres.
+  /// Families to analyse, indexed by Axis. Each gives its own top-view thickness (the xy
+  /// family as the number of levels holding residue times the pitch); the map keeps the least.
+  std::array<bool, 3> families{true, true, true};
+  /// Residues thinner than this are removed (an opening by half of it in each slice) and
+  /// left out of the map: the faceting of the mesh and the arc tolerance leave slivers of a
+  /// few micrometres along concave arcs of about the tool radius.
   double min_thickness_mm = 0.02;
   /// Only slices whose level lies in this box (per family, along its axis) are analysed;
   /// empty: all. Saves time when only a feature is of interest.
   Box3 region;
-  ConvolutionOptions convolution{0.005};
+  ConvolutionOptions convolution{0.005, 1};
+  /// Normal error the closing may make between slices, mm: neighbours are read every
+  /// floor(sqrt(8 r tol) / ds) slices (offset.h bound ds'^2 / (8 r) <= tol). 0 = every slice.
+  double convolution_tolerance_mm = 0.005;
 };
 Status validate(const RestOptions& o);
 
@@ -46,10 +51,10 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
 double residue_thickness(const SliceFamily& family, std::size_t j, double s);
 
 /// Top view of the residue: thickness (mm) per cell of `cell_mm` over the model's xy bounds;
-/// row 0 at min y. Where both vertical families cross a cell the smaller thickness counts: a
-/// region is unmachinable only if both representations agree (superposition, section 2.1);
-/// this removes the false residues a family shows where a wall is nearly parallel to its
-/// planes (offset.h).
+/// row 0 at min y. Where several families see a cell the smallest thickness counts: a region
+/// is unmachinable only if the representations agree (superposition, section 2.1); this
+/// removes the false residues a family shows where a wall is nearly parallel to its planes
+/// (offset.h).
 struct ThicknessMap {
   int nx = 0, ny = 0;
   double cell_mm = 0.1;

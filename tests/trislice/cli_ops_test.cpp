@@ -1,0 +1,105 @@
+// The surface, dropcut and rest operations end to end through the swarf executable.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cli/cli_test_util.h"
+#include "swarf/mesh/generate.h"
+#include "swarf/mesh/stl.h"
+
+namespace swarf {
+namespace {
+
+using testing::run_swarf;
+using testing::TempDir;
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// CL points of a "line,x,y,z" CSV.
+std::vector<Vec3> read_cl(const std::string& csv) {
+  std::vector<Vec3> out;
+  std::istringstream in(csv);
+  std::string row;
+  std::getline(in, row);
+  while (std::getline(in, row)) {
+    double l = 0, x = 0, y = 0, z = 0;
+    if (std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &l, &x, &y, &z) == 4) out.push_back({x, y, z});
+  }
+  return out;
+}
+
+TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
+  TempDir dir;
+  ASSERT_TRUE(write_stl(dir.file("dome.stl"), make_sphere({0, 0, 0}, 8.0, 96)).ok());
+  const auto a =
+      run_swarf("surface " + dir.file("dome.stl") +
+                " --tool ball:6 --pattern scan --stepover 1 --sampling 0.25 --pitch "
+                "0.1 -o " +
+                dir.file("s.nc") + " --csv " + dir.file("s.csv") + " --report " + dir.file("rep"));
+  ASSERT_EQ(a.status, 0) << a.out;
+  const auto b =
+      run_swarf("dropcut " + dir.file("dome.stl") +
+                " --tool ball:6 --stepover 1 --sampling 0.25 --csv " + dir.file("d.csv"));
+  ASSERT_EQ(b.status, 0) << b.out;
+  const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
+  const std::vector<Vec3> d = read_cl(slurp(dir.file("d.csv")));
+  ASSERT_EQ(s.size(), d.size());
+  ASSERT_GT(s.size(), 1000u);
+  std::size_t close = 0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    ASSERT_NEAR(s[k].x, d[k].x, 1e-9);
+    ASSERT_NEAR(s[k].y, d[k].y, 1e-9);
+    close += std::fabs(s[k].z - d[k].z) <= 0.005;
+  }
+  // Steep rims aside (vertical deviations there measure the slope), the grids agree.
+  EXPECT_GT(static_cast<double>(close) / static_cast<double>(s.size()), 0.97);
+  EXPECT_NE(slurp(dir.file("s.nc")).find("G1"), std::string::npos);
+  EXPECT_NE(slurp(dir.file("rep/summary.json")).find("cl_points"), std::string::npos);
+}
+
+TEST(TriSliceCli, RestWritesMapAndPointsAndRejectsFlatTools) {
+  TempDir dir;
+  // Two boxes side by side with a 2 mm slot: a ø8 ball leaves the slot's material behind.
+  Mesh m = make_box({{0, 0, 0}, {10, 10, 5}});
+  const Mesh n = make_box({{12, 0, 0}, {22, 10, 5}});
+  const auto base = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), n.vertices.begin(), n.vertices.end());
+  for (auto t : n.triangles)
+    m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  const Mesh floor = make_box({{0, 0, -3}, {22, 10, 0}});
+  const auto base2 = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), floor.vertices.begin(), floor.vertices.end());
+  for (auto t : floor.triangles)
+    m.triangles.push_back({t[0] + base2, t[1] + base2, t[2] + base2});
+  ASSERT_TRUE(write_stl(dir.file("slot.stl"), m).ok());
+  const auto r = run_swarf("rest " + dir.file("slot.stl") + " --tool ball:8 --pitch 0.5 --report " +
+                           dir.file("rep") + " --csv " + dir.file("rest.csv"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(slurp(dir.file("rep/rest_map.png")).substr(1, 3), "PNG");
+  EXPECT_EQ(slurp(dir.file("rep/rest_points.ply")).rfind("ply\n", 0), 0u);
+  // Residue cells lie in the slot (10 < x < 12).
+  const std::string csv = slurp(dir.file("rest.csv"));
+  std::istringstream in(csv);
+  std::string row;
+  std::getline(in, row);
+  int cells = 0;
+  while (std::getline(in, row)) {
+    double x = 0, y = 0, t = 0;
+    ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf", &x, &y, &t), 3);
+    EXPECT_GT(x, 9.5);
+    EXPECT_LT(x, 12.5);
+    ++cells;
+  }
+  EXPECT_GT(cells, 10);
+  EXPECT_EQ(run_swarf("rest " + dir.file("slot.stl") + " --tool flat:8").status, 2);
+}
+
+}  // namespace
+}  // namespace swarf
