@@ -24,25 +24,26 @@ namespace swarf::cli {
 enum class ParamType { kNumber, kInteger, kString, kBool, kNumberList };
 
 struct Param {
-  std::string key;        ///< JSON key, snake_case; the flag is --key-with-dashes
+  std::string key;  ///< JSON key, snake_case; the flag is --key-with-dashes
   ParamType type = ParamType::kNumber;
   nlohmann::json default_value;  ///< null: required unless `optional`
-  std::string help;       ///< what it means to a machinist, with units
-  bool optional = false;  ///< may be absent (run() sees null)
+  std::string help;              ///< what it means to a machinist, with units
+  bool optional = false;         ///< may be absent (run() sees null)
 };
 
 /// What run() gets.
 struct OperationInput {
-  std::string input_path;        ///< the positional input (pocket, STL, G-code, CSV), as given
-  std::optional<Tool> tool;      ///< from --tool / --tool-library, when the operation takes one
-  nlohmann::json params;         ///< every declared key, defaults filled in
+  std::string input_path;    ///< the positional input (pocket, STL, G-code, CSV), as given
+  std::optional<Tool> tool;  ///< from --tool / --tool-library, when the operation takes one
+  nlohmann::json params;     ///< every declared key, defaults filled in
   const Context* ctx = nullptr;
 };
 
 /// What run() returns; the framework writes it (atomically) where the user asked.
 struct OperationOutput {
-  std::vector<Toolpath> toolpaths;          ///< G-code (-o) and CSV (--csv) come from these
-  nlohmann::json summary = nlohmann::json::object();  ///< report/summary.json, and one line on stderr
+  std::vector<Toolpath> toolpaths;  ///< G-code (-o) and CSV (--csv) come from these
+  nlohmann::json summary =
+      nlohmann::json::object();  ///< report/summary.json, and one line on stderr
   /// Extra report files, name -> bytes, written into the --report folder.
   std::map<std::string, std::string> report_files;
   /// Replaces the toolpath CSV when the operation's natural table is not the toolpath
@@ -55,8 +56,8 @@ struct OperationOutput {
 };
 
 struct Operation {
-  std::string name;   ///< subcommand and job "type"
-  std::string help;   ///< one line for --help
+  std::string name;        ///< subcommand and job "type"
+  std::string help;        ///< one line for --help
   std::string input_help;  ///< what the positional input is
   bool takes_tool = true;
   bool writes_gcode = true;

@@ -265,7 +265,8 @@ PolygonSet normalized_nonzero_fast(const PolygonSet& set) {
   if (plain && simple_and_disjoint(paths) && oriented_as_normalized(paths)) {
     PolygonSet out;
     out.rings.reserve(paths.size());
-    for (const cl::Path& p : paths) out.rings.push_back(to_ring(p));
+    for (const cl::Path& p : paths)
+      out.rings.push_back(to_ring(p));
     return out;
   }
   return normalized(set, FillRule::kNonZero);

@@ -56,7 +56,8 @@ TEST(ParallelFor, VisitsEveryIndexOnceWhateverTheThreadCount) {
   for (int threads : {1, 2, 3, 8}) {
     std::vector<std::atomic<int>> hits(1000);
     parallel_for(hits.size(), threads, [&](std::size_t i) { hits[i]++; });
-    for (const auto& h : hits) ASSERT_EQ(h.load(), 1);
+    for (const auto& h : hits)
+      ASSERT_EQ(h.load(), 1);
   }
 }
 

@@ -73,10 +73,9 @@ class Rs274 : public ::testing::Test {
     // rs274 keeps state outside its arguments (shared memory, a parameter file in the
     // working folder): concurrent runs from parallel ctest corrupt each other. Serialise
     // them with a lock file and run each in its own folder.
-    const std::string cmd = "cd '" + dir_.string() + "' && flock /tmp/swarf_rs274.lock '" +
-                            rs274_ + "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" +
-                            file.string() + "' > '" + out.string() + "' 2> '" + err.string() +
-                            "' < /dev/null";
+    const std::string cmd = "cd '" + dir_.string() + "' && flock /tmp/swarf_rs274.lock '" + rs274_ +
+                            "' -g -t '" + (dir_ / "tools.tbl").string() + "' '" + file.string() +
+                            "' > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
     Rs274Run r;
     const int raw = std::system(cmd.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

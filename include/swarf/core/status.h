@@ -13,15 +13,15 @@ namespace swarf {
 
 enum class Error {
   kOk = 0,
-  kBadInput,         ///< a malformed file: STL, pocket, G-code, job, tool library
-  kBadParameter,     ///< a parameter out of range: negative stepover, stepdown > flute length
-  kToolTooLarge,     ///< the tool does not fit the feature it must machine
-  kNoEntryFound,     ///< nowhere to plunge or ramp in
-  kOpenMesh,         ///< a mesh that is not closed where a solid is needed
-  kEmptyResult,      ///< the operation would produce no toolpath at all
-  kIo,               ///< a file could not be read or written
-  kCancelled,        ///< the caller cancelled through the Context
-  kInternal,         ///< a bug: an invariant did not hold
+  kBadInput,      ///< a malformed file: STL, pocket, G-code, job, tool library
+  kBadParameter,  ///< a parameter out of range: negative stepover, stepdown > flute length
+  kToolTooLarge,  ///< the tool does not fit the feature it must machine
+  kNoEntryFound,  ///< nowhere to plunge or ramp in
+  kOpenMesh,      ///< a mesh that is not closed where a solid is needed
+  kEmptyResult,   ///< the operation would produce no toolpath at all
+  kIo,            ///< a file could not be read or written
+  kCancelled,     ///< the caller cancelled through the Context
+  kInternal,      ///< a bug: an invariant did not hold
 };
 
 /// Short stable name of an error code ("bad input", "tool too large", ...).
@@ -49,7 +49,9 @@ class Status {
   std::string message_;
 };
 
-inline Status bad_input(std::string message) { return {Error::kBadInput, std::move(message)}; }
+inline Status bad_input(std::string message) {
+  return {Error::kBadInput, std::move(message)};
+}
 inline Status bad_parameter(std::string message) {
   return {Error::kBadParameter, std::move(message)};
 }
@@ -58,7 +60,7 @@ inline Status bad_parameter(std::string message) {
 template <class T>
 class Result {
  public:
-  Result(T value) : data_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  Result(T value) : data_(std::move(value)) {}        // NOLINT(google-explicit-constructor)
   Result(Status status) : data_(std::move(status)) {  // NOLINT(google-explicit-constructor)
     assert(!std::get<Status>(data_).ok() && "a Result made from a Status must hold a failure");
   }
@@ -82,8 +84,8 @@ class Result {
 }  // namespace swarf
 
 /// Returns early from a function returning Status or Result with the failure of expr.
-#define SWARF_RETURN_IF_ERROR(expr)          \
-  do {                                       \
-    ::swarf::Status swarf_status_ = (expr);  \
+#define SWARF_RETURN_IF_ERROR(expr)                \
+  do {                                             \
+    ::swarf::Status swarf_status_ = (expr);        \
     if (!swarf_status_.ok()) return swarf_status_; \
   } while (false)

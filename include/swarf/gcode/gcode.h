@@ -23,8 +23,8 @@ Result<Dialect> parse_dialect(std::string_view name);
 
 struct GcodeOptions {
   Dialect dialect = Dialect::kIso;
-  int program_number = 1000;         ///< Fanuc O-number
-  bool line_numbers = false;         ///< N-words on every block
+  int program_number = 1000;  ///< Fanuc O-number
+  bool line_numbers = false;  ///< N-words on every block
   int line_number_step = 10;
   int decimals = 4;                  ///< digits after the point for coordinates
   double blend_tolerance_mm = 0.01;  ///< LinuxCNC G64 P

@@ -19,7 +19,7 @@ struct ToolpathMetrics {
   /// Times the tool leaves the work to the clearance plane between cuts (the final
   /// retract at the program's end is not counted).
   std::size_t lift_offs = 0;
-  double machining_time_s = 0.0;   ///< feeds at their feed rates plus rapids at rapid_mm_min
+  double machining_time_s = 0.0;  ///< feeds at their feed rates plus rapids at rapid_mm_min
   std::size_t moves = 0;
 };
 

@@ -22,10 +22,10 @@ std::vector<Vec2> chaikin_smooth(const std::vector<Vec2>& points, int iterations
 Toolpath simplify(const Toolpath& path, double tolerance_mm);
 
 struct ArcFitOptions {
-  double tolerance_mm = 0.005;    ///< largest distance of a replaced point from the arc
+  double tolerance_mm = 0.005;  ///< largest distance of a replaced point from the arc
   double min_radius_mm = 0.05;
   double max_radius_mm = 1000.0;
-  int min_points = 4;             ///< shortest run of lines to turn into an arc
+  int min_points = 4;  ///< shortest run of lines to turn into an arc
 };
 /// Replaces runs of linear feed moves at constant height whose points lie on a circle
 /// within the tolerance by XY arcs (G2/G3).
