@@ -160,16 +160,26 @@ class Chooser {
     const int tm = m_.theta_max_deg;
     start = std::clamp(start, -tm, tm);
     const Candidate k = get(start);
-    for (int d = 1; d <= 2 * tm; ++d) {
-      const int lo = start - d, hi = start + d;
-      if (k.eng < 0) {
-        if (hi <= tm && get(hi).eng >= 0) return valid(get(hi));
-        if (lo >= -tm && get(lo).eng >= 0) return valid(get(lo));
-      } else {
-        if (lo >= -tm && get(lo).eng < 0) return valid(get(lo + 1));
-        if (hi <= tm && get(hi).eng < 0) return valid(get(hi - 1));
+    const bool k_gouges = k.eng < 0;
+    // Probed every kStride degrees on both sides; the window since the last stride is
+    // searched degree by degree (the outward order above) only when a stride probe shows
+    // a transition or a side leaves the range: the same move wherever the gouge/free
+    // state does not flip and flip back within kStride degrees.
+    auto flips = [&](int t) { return t >= -tm && t <= tm && (get(t).eng < 0) != k_gouges; };
+    for (int top = kStride; top - kStride < 2 * tm; top += kStride) {
+      const bool edge = start - top < -tm || start + top > tm;
+      if (!edge && !flips(start + top) && !flips(start - top)) continue;
+      for (int d = top - kStride + 1; d <= top; ++d) {
+        const int lo = start - d, hi = start + d;
+        if (k_gouges) {
+          if (hi <= tm && get(hi).eng >= 0) return valid(get(hi));
+          if (lo >= -tm && get(lo).eng >= 0) return valid(get(lo));
+        } else {
+          if (lo >= -tm && get(lo).eng < 0) return valid(get(lo + 1));
+          if (hi <= tm && get(hi).eng < 0) return valid(get(hi - 1));
+        }
+        if (lo < -tm && hi > tm) return Candidate{};
       }
-      if (lo < -tm && hi > tm) break;
     }
     return Candidate{};  // no wall within reach
   }
