@@ -14,6 +14,10 @@ Status validate(const ContourParallelParams& p, const Tool& tool) {
     return bad_parameter("stepover_mm must be in (0, tool diameter] (0 = 10 % of it)");
   if (!(p.depth_mm > 0.0)) return bad_parameter("depth_mm must be positive");
   if (p.stepdown_mm < 0.0) return bad_parameter("stepdown_mm must not be negative");
+  // The whole depth in one layer (stepdown 0) must fit the flutes, as in the adaptive op.
+  if (p.stepdown_mm > tool.flute_length_mm ||
+      (p.stepdown_mm == 0.0 && p.depth_mm > tool.flute_length_mm))
+    return bad_parameter("stepdown exceeds the flute length of the tool");
   if (p.floor_stock_mm < 0.0 || p.floor_stock_mm >= p.depth_mm)
     return bad_parameter("floor_stock_mm must be in [0, depth_mm)");
   if (p.wall_stock_mm < 0.0) return bad_parameter("wall_stock_mm must not be negative");

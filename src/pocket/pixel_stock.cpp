@@ -170,6 +170,11 @@ int PixelStock::probe(Vec2 from, Vec2 to) const {
     const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
     if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
       const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+      // The nearest forbidden pixel lies within c +- 0.71 of `to` (the exact transform's
+      // value at the nearest pixel); 0.05 covers the 1/kSub snapping of the row widths.
+      // Inside R: disk(to) holds it, disk(from) is free, so the crescent does: a gouge,
+      // without scanning (boundary moves and the scans probe many such moves).
+      if (c + 0.71 < radius_px_ - 0.05) return kGouge;
       if (c - 0.71 > radius_px_ + 1.0) {
         crescent_rows(from, to, [&](int jj, int x0, int x1) {
           n += material_.count(jj, x0, x1);

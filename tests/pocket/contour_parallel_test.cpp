@@ -30,6 +30,24 @@ TEST(ContourParallel, LWithIslandsHasNoGougeAndLeavesOnlyUnreachableMaterial) {
   EXPECT_LE(s.residual_mm2, 0.5);
 }
 
+TEST(ContourParallel, WholeDepthBeyondTheFlutesIsABadParameter) {
+  auto p = make_pocket({{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {}, "square");
+  ASSERT_TRUE(p.ok());
+  Tool t;
+  t.diameter_mm = 6.0;
+  t.flute_length_mm = 10.0;
+  ContourParallelParams cp;
+  cp.depth_mm = 12.0;  // stepdown 0: one 12 mm layer, deeper than the 10 mm flutes
+  auto r = contour_parallel_pocket(*p, t, cp);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), Error::kBadParameter);
+  EXPECT_NE(r.status().to_string().find("flute"), std::string::npos) << r.status().to_string();
+  cp.stepdown_mm = 11.0;  // a layer deeper than the flutes
+  EXPECT_EQ(contour_parallel_pocket(*p, t, cp).status().code(), Error::kBadParameter);
+  cp.stepdown_mm = 6.0;  // two 6 mm layers fit
+  EXPECT_TRUE(contour_parallel_pocket(*p, t, cp).ok());
+}
+
 TEST(ContourParallel, ToolTooLarge) {
   auto p = make_pocket({{0, 0}, {5, 0}, {5, 5}, {0, 5}}, {}, "small");
   Tool t;

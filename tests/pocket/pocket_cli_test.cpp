@@ -54,5 +54,17 @@ TEST(ContourCli, WritesGcode) {
   EXPECT_TRUE(read_gcode(dir.file("c.nc")).ok());
 }
 
+TEST(ContourCli, WholeDepthBeyondTheFlutesIsABadParameterExit) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const auto r = testing::run_swarf("contour " + in +
+                                    " --tool flat:10 --flute-length 8 --depth 12 --stepdown 0 -o " +
+                                    dir.file("c.nc"));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("bad parameter"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("flute"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("c.nc")));
+}
+
 }  // namespace
 }  // namespace swarf
