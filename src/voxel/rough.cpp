@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -372,12 +373,16 @@ class Builder {
 
   // From the end of the previous layer at its height, straight over to q, then down.
   bool layer_change_clear(Vec2 q) const {
-    const std::vector<std::uint8_t>& prev = prev_flags_;
+    const std::vector<std::uint8_t>& prev = prev_flags();
     return link_clear(prev_k_, pos_, q,
                       [&](std::size_t c) { return (prev[c] & voxel_detail::kFree) != 0; });
   }
 
   void emit_layer(const Layer& L) {
+    own_start_.resize(L.flags.size());
+    for (std::size_t c = 0; c < L.flags.size(); ++c)
+      own_start_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
+    layer_start_ = &own_start_;
     TwoEndsTour tour;
     for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
       tour.order.push_back(r);
@@ -408,8 +413,20 @@ class Builder {
       }
       double best = std::numeric_limits<double>::infinity();
       dry_run_budget_ = std::min(kDryRunCellBudget, total_budget_);
-      for (TwoEndsTour& cand : candidates) {
-        const double c = refine(L, cand, dry_run(L, cand));
+      const double per_run =
+          static_cast<double>(L.flags.size()) * static_cast<double>(L.regions.size());
+      for (std::size_t ci = 0; ci < candidates.size(); ++ci) {
+        TwoEndsTour& cand = candidates[ci];
+        // A tour equal to an earlier candidate costs the same and would not replace it.
+        bool seen = false;
+        for (std::size_t cj = 0; cj < ci && !seen; ++cj)
+          seen = candidates[cj].order == cand.order && candidates[cj].flipped == cand.flipped;
+        if (seen) continue;
+        // When refine() cannot afford a move, only whether this tour beats `best` matters:
+        // its dry run may stop as soon as it cannot (the cost only grows while emitting).
+        const double bound =
+            dry_run_budget_ >= per_run ? std::numeric_limits<double>::infinity() : best;
+        const double c = refine(L, cand, dry_run(L, cand, bound));
         if (c < best) {
           best = c;
           tour = cand;
@@ -443,7 +460,7 @@ class Builder {
             cand.order.insert(cand.order.begin() + static_cast<std::ptrdiff_t>(k), r);
             if (flip) cand.flipped[static_cast<std::size_t>(r)] ^= 1;
             dry_run_budget_ -= per_run;
-            const double c = dry_run(L, cand);
+            const double c = dry_run(L, cand, best - 1e-9);
             if (c < best - 1e-9) {
               best = c;
               tour = std::move(cand);
@@ -457,24 +474,44 @@ class Builder {
   }
 
   // Air path plus lift penalties of emitting this layer with `tour`, without emitting it.
-  double dry_run(const Layer& L, const TwoEndsTour& tour) const {
-    Builder sim = *this;
-    Toolpath scratch;
-    RoughMetrics sm;
-    sim.tp_ = &scratch;
-    sim.metrics_ = &sm;
+  // Stops early, returning infinity, once the cost reaches `bound` (the caller only asks
+  // whether the tour costs less than that).
+  double dry_run(const Layer& L, const TwoEndsTour& tour,
+                 double bound = std::numeric_limits<double>::infinity()) {
+    // A copy of the emitter state a tour reads and writes; the planning state (plan_*) and
+    // the layer-sized buffers are not copied: cleared_ is rebuilt from the layer's start
+    // state, prev_flags_ is only read, so the copy borrows this builder's buffers.
+    dry_tp_.moves.clear();
+    dry_metrics_ = RoughMetrics{};
+    if (!dry_sim_)
+      dry_sim_ = std::make_unique<Builder>(m_, reach_, p_, dry_tp_, dry_metrics_, *scratch_);
+    Builder& sim = *dry_sim_;
+    sim.clear_z_ = clear_z_;
+    sim.pos_ = pos_;
+    sim.has_pos_ = has_pos_;
+    sim.last_ = last_;
+    sim.has_last_ = has_last_;
+    sim.prev_k_ = prev_k_;
+    sim.started_layer_ = started_layer_;
     sim.air_ = 0.0;
+    sim.borrowed_prev_ = &prev_flags_;
+    sim.layer_start_ = layer_start_;
+    sim.abort_at_ = bound;
     sim.emit_tour(L, tour);
-    return sim.air_ + static_cast<double>(sm.lift_offs) * p_.lift_penalty_mm;
+    if (sim.aborted_) return std::numeric_limits<double>::infinity();
+    return sim.air_ + static_cast<double>(dry_metrics_.lift_offs) * p_.lift_penalty_mm;
   }
 
   void emit_tour(const Layer& L, const TwoEndsTour& tour) {
-    // Cells without stock hold nothing to cut: links may cross them from the start.
-    cleared_.resize(L.flags.size());
-    for (std::size_t c = 0; c < L.flags.size(); ++c) {
-      cleared_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
-    }
+    // Cells without stock hold nothing to cut: links may cross them from the start. The
+    // start state is built once per layer and copied for every (dry) run.
+    aborted_ = false;
+    cleared_ = *layer_start_;
     for (int r : tour.order) {
+      if (air_ + static_cast<double>(metrics_->lift_offs) * p_.lift_penalty_mm >= abort_at_) {
+        aborted_ = true;
+        return;
+      }
       const CellPath& path = L.regions[static_cast<std::size_t>(r)];
       const bool rev = tour.flipped[static_cast<std::size_t>(r)] != 0;
       const std::size_t n = path.pts.size();
@@ -527,8 +564,8 @@ class Builder {
       }
       const std::vector<Vec2> way =
           routing()
-              ? route(prev_k_, prev_flags_, pos_, q,
-                      [&](std::size_t c) { return (prev_flags_[c] & voxel_detail::kFree) != 0; })
+              ? route(prev_k_, prev_flags(), pos_, q,
+                      [&](std::size_t c) { return (prev_flags()[c] & voxel_detail::kFree) != 0; })
               : std::vector<Vec2>{};
       if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
         for (const Vec2& w : way)
@@ -592,6 +629,20 @@ class Builder {
   bool has_last_ = false;
   int prev_k_ = -1, started_layer_ = -1;
   std::vector<std::uint8_t> prev_flags_, cleared_;
+  // Dry runs: the previous layer's flags and the layer's start state are borrowed from the
+  // builder that runs them; the simulating builder and its output are reused.
+  const std::vector<std::uint8_t>* borrowed_prev_ = nullptr;
+  std::vector<std::uint8_t> own_start_;
+  const std::vector<std::uint8_t>* layer_start_ = &own_start_;
+  double abort_at_ = std::numeric_limits<double>::infinity();
+  bool aborted_ = false;
+  std::unique_ptr<Builder> dry_sim_;
+  Toolpath dry_tp_;
+  RoughMetrics dry_metrics_;
+
+  const std::vector<std::uint8_t>& prev_flags() const {
+    return borrowed_prev_ != nullptr ? *borrowed_prev_ : prev_flags_;
+  }
 };
 
 void measure(const Toolpath& tp, RoughMetrics& m) {
