@@ -412,6 +412,7 @@ class Builder {
         candidates.push_back(std::move(back));
       }
       double best = std::numeric_limits<double>::infinity();
+      snap_.cost = std::numeric_limits<double>::infinity();
       dry_run_budget_ = std::min(kDryRunCellBudget, total_budget_);
       const double per_run =
           static_cast<double>(L.flags.size()) * static_cast<double>(L.regions.size());
@@ -434,8 +435,20 @@ class Builder {
       }
       total_budget_ -= std::min(kDryRunCellBudget, total_budget_) - dry_run_budget_;
       plan_tour_ = tour;
+      if (snap_.cost < std::numeric_limits<double>::infinity() && snap_.tour.order == tour.order &&
+          snap_.tour.flipped == tour.flipped) {
+        tp_->moves.insert(tp_->moves.end(), snap_.moves.begin(), snap_.moves.end());
+        metrics_->lift_offs += snap_.lift_offs;
+        air_ += snap_.air;
+        pos_ = snap_.pos;
+        has_pos_ = snap_.has_pos;
+        last_ = snap_.last;
+        has_last_ = snap_.has_last;
+        started_layer_ = snap_.started_layer;
+        tour.order.clear();  // emitted
+      }
     }
-    emit_tour(L, tour);
+    if (!tour.order.empty()) emit_tour(L, tour);
     prev_flags_ = L.flags;
     prev_k_ = L.k;
   }
@@ -499,7 +512,22 @@ class Builder {
     sim.abort_at_ = bound;
     sim.emit_tour(L, tour);
     if (sim.aborted_) return std::numeric_limits<double>::infinity();
-    return sim.air_ + static_cast<double>(dry_metrics_.lift_offs) * p_.lift_penalty_mm;
+    const double cost = sim.air_ + static_cast<double>(dry_metrics_.lift_offs) * p_.lift_penalty_mm;
+    // Keep the cheapest complete dry run of the layer: when its tour is the one chosen,
+    // emitting it again would give the same moves (same start state, same tour).
+    if (cost < snap_.cost) {
+      snap_.cost = cost;
+      snap_.tour = tour;
+      std::swap(snap_.moves, dry_tp_.moves);
+      snap_.lift_offs = dry_metrics_.lift_offs;
+      snap_.air = sim.air_;
+      snap_.pos = sim.pos_;
+      snap_.has_pos = sim.has_pos_;
+      snap_.last = sim.last_;
+      snap_.has_last = sim.has_last_;
+      snap_.started_layer = sim.started_layer_;
+    }
+    return cost;
   }
 
   void emit_tour(const Layer& L, const TwoEndsTour& tour) {
@@ -637,6 +665,18 @@ class Builder {
   double abort_at_ = std::numeric_limits<double>::infinity();
   bool aborted_ = false;
   std::unique_ptr<Builder> dry_sim_;
+  struct Snapshot {  // the cheapest complete dry run of the layer and its end state
+    double cost = std::numeric_limits<double>::infinity();
+    TwoEndsTour tour;
+    std::vector<Move> moves;
+    std::size_t lift_offs = 0;
+    double air = 0.0;
+    Vec2 pos;
+    bool has_pos = false;
+    Vec3 last;
+    bool has_last = false;
+    int started_layer = -1;
+  } snap_;
   Toolpath dry_tp_;
   RoughMetrics dry_metrics_;
 
