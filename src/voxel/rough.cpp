@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -52,6 +53,11 @@ struct Scratch {
   std::vector<std::size_t> queue;
   std::vector<std::size_t> parent;
   std::vector<std::vector<std::size_t>> buckets;
+  // Routes of the layer being planned, shared by its dry runs and its emission. A route
+  // depends only on its end cells, the layer and which cells are cut: the regions already
+  // finished (a bit each), or the previous layer for a layer change. Key: from cell, to
+  // cell, layer-change flag, then the finished regions' bits.
+  std::map<std::vector<std::uint64_t>, std::vector<Vec2>> routes;
 };
 
 class Builder {
@@ -173,22 +179,27 @@ class Builder {
     };
     for (auto& b : sc.buckets)
       b.clear();
-    auto push = [&](std::size_t c, int g) {
+    // hc: the heuristic of c, passed in (found from the popped cell's coordinates) so that
+    // no cell index is divided twice.
+    auto push = [&](std::size_t c, int g, std::size_t hc) {
       sc.stamp[c] = sc.gen;
       sc.dist[c] = g;
-      const std::size_t f = static_cast<std::size_t>(g) + h(c);
+      const std::size_t f = static_cast<std::size_t>(g) + hc;
       if (f >= sc.buckets.size()) sc.buckets.resize(f + 1);
       sc.buckets[f].push_back(c);
     };
     sc.parent[from] = from;
-    push(from, 0);
+    push(from, 0, h(from));
     for (std::size_t f = h(from); f < sc.buckets.size(); ++f) {
       // Last in, first out within a bucket: among equal f the deepest g first, which
       // breaks the many ties of the Manhattan metric towards the target.
       while (!sc.buckets[f].empty()) {
         const std::size_t c = sc.buckets[f].back();
         sc.buckets[f].pop_back();
-        if (static_cast<std::size_t>(sc.dist[c]) + h(c) != f) continue;  // stale entry
+        const long ci = static_cast<long>(c % nx), cj = static_cast<long>(c / nx);
+        const std::size_t hx = static_cast<std::size_t>(std::labs(ci - ti));
+        const std::size_t hy = static_cast<std::size_t>(std::labs(cj - tj));
+        if (static_cast<std::size_t>(sc.dist[c]) + hx + hy != f) continue;  // stale entry
         if (c == to) {
           cells.clear();
           for (std::size_t x = to; x != from; x = sc.parent[x])
@@ -198,17 +209,20 @@ class Builder {
           return true;
         }
         const int g = sc.dist[c] + 1;
-        auto visit = [&](std::size_t d) {
+        auto visit = [&](std::size_t d, std::size_t hd) {
           if ((sc.stamp[d] != sc.gen || g < sc.dist[d]) && ok(d)) {
             sc.parent[d] = c;
-            push(d, g);
+            push(d, g, hd);
           }
         };
-        const std::size_t i = c % nx;
-        if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
-        if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
-        if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
-        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+        const std::size_t hx_plus = static_cast<std::size_t>(std::labs(ci + 1 - ti));
+        const std::size_t hx_minus = static_cast<std::size_t>(std::labs(ci - 1 - ti));
+        const std::size_t hy_plus = static_cast<std::size_t>(std::labs(cj + 1 - tj));
+        const std::size_t hy_minus = static_cast<std::size_t>(std::labs(cj - 1 - tj));
+        if (flags[c] & voxel_detail::kLinkX) visit(c + 1, hx_plus + hy);
+        if (ci > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1, hx_minus + hy);
+        if (flags[c] & voxel_detail::kLinkY) visit(c + nx, hx + hy_plus);
+        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx, hx + hy_minus);
       }
     }
     return false;
@@ -379,6 +393,7 @@ class Builder {
   }
 
   void emit_layer(const Layer& L) {
+    scratch_->routes.clear();
     own_start_.resize(L.flags.size());
     for (std::size_t c = 0; c < L.flags.size(); ++c)
       own_start_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
@@ -535,6 +550,7 @@ class Builder {
     // start state is built once per layer and copied for every (dry) run.
     aborted_ = false;
     cleared_ = *layer_start_;
+    done_.assign((L.regions.size() + 63) / 64, 0);
     for (int r : tour.order) {
       if (air_ + static_cast<double>(metrics_->lift_offs) * p_.lift_penalty_mm >= abort_at_) {
         aborted_ = true;
@@ -546,12 +562,15 @@ class Builder {
       auto pt = [&](std::size_t t) { return path.pts[rev ? n - 1 - t : t]; };
       auto cut = [&](std::size_t s) { return path.cutting[rev ? n - 2 - s : s] != 0; };
       go_to(L, at(pt(0)));
+      if (aborted_) return;
       mark(pt(0), pt(0));
       for (std::size_t s = 0; s + 1 < n; ++s) {
         feed(to_vec3(at(pt(s + 1)), m_.layer_z(L.k)), p_.feed_mm_min, cut(s));
         mark(pt(s), pt(s + 1));
       }
       pos_ = at(pt(n - 1));
+      done_[static_cast<std::size_t>(r) / 64] |= std::uint64_t{1}
+                                                 << (static_cast<unsigned>(r) % 64);
     }
   }
 
@@ -561,6 +580,15 @@ class Builder {
 
  private:
   void go_to(const Layer& L, Vec2 q) {
+    // Every way to q adds at least the straight distance to the air path: a dry run that
+    // cannot stay under its bound stops before routing (margin for rounding).
+    if (has_pos_ && abort_at_ < std::numeric_limits<double>::infinity() &&
+        air_ + static_cast<double>(metrics_->lift_offs) * p_.lift_penalty_mm +
+                distance(pos_, q) * (1.0 - 1e-9) >=
+            abort_at_) {
+      aborted_ = true;
+      return;
+    }
     const double z = m_.layer_z(L.k);
     const bool same_layer = started_layer_ == L.k;
     started_layer_ = L.k;
@@ -577,7 +605,9 @@ class Builder {
       // cheaper than going up and over (not for the plain zig-zag baseline, which links
       // straight or lifts, as a CAM system without segmentation does).
       const std::vector<Vec2> way =
-          routing() ? route(L.k, L.flags, pos_, q, cut) : std::vector<Vec2>{};
+          routing()
+              ? cached_route(false, pos_, q, [&] { return route(L.k, L.flags, pos_, q, cut); })
+              : std::vector<Vec2>{};
       if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
         for (const Vec2& w : way)
           feed(to_vec3(w, z), p_.feed_mm_min, false);
@@ -592,8 +622,12 @@ class Builder {
       }
       const std::vector<Vec2> way =
           routing()
-              ? route(prev_k_, prev_flags(), pos_, q,
-                      [&](std::size_t c) { return (prev_flags()[c] & voxel_detail::kFree) != 0; })
+              ? cached_route(true, pos_, q,
+                             [&] {
+                               return route(prev_k_, prev_flags(), pos_, q, [&](std::size_t c) {
+                                 return (prev_flags()[c] & voxel_detail::kFree) != 0;
+                               });
+                             })
               : std::vector<Vec2>{};
       if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
         for (const Vec2& w : way)
@@ -609,6 +643,17 @@ class Builder {
     rapid(to_vec3(q, clear_z_));
     rapid(to_vec3(q, m_.layer_top(L.k) + kApproachMm));
     plunge(z);
+  }
+
+  template <class F>
+  const std::vector<Vec2>& cached_route(bool layer_change, Vec2 p, Vec2 q, F&& compute) {
+    std::vector<std::uint64_t>& key = route_key_;
+    key.assign({cell_at(p), cell_at(q), layer_change ? 1u : 0u});
+    if (!layer_change) key.insert(key.end(), done_.begin(), done_.end());
+    auto& routes = scratch_->routes;
+    auto it = routes.find(key);
+    if (it == routes.end()) it = routes.emplace(key, compute()).first;
+    return it->second;
   }
 
   void mark(voxel_detail::CellPoint a, voxel_detail::CellPoint b) {
@@ -665,6 +710,7 @@ class Builder {
   double abort_at_ = std::numeric_limits<double>::infinity();
   bool aborted_ = false;
   std::unique_ptr<Builder> dry_sim_;
+  std::vector<std::uint64_t> done_, route_key_;  // regions finished in this layer; a route key
   struct Snapshot {  // the cheapest complete dry run of the layer and its end state
     double cost = std::numeric_limits<double>::infinity();
     TwoEndsTour tour;
