@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -59,6 +60,17 @@ struct Scratch {
   // cell, layer-change flag, then the finished regions' bits.
   std::map<std::vector<std::uint64_t>, std::vector<Vec2>> routes;
 };
+
+// Heights a layer's threshold is compared with by the link tests (base heights, and the
+// cell reach for the paper's rule), sorted, distinct.
+std::vector<double> compared_heights(const Reach& reach) {
+  std::vector<double> v = reach.base;
+  if (reach.rule == OffsetRule::kPaperSquare)
+    v.insert(v.end(), reach.centre.begin(), reach.centre.end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
 
 class Builder {
  public:
@@ -393,7 +405,24 @@ class Builder {
   }
 
   void emit_layer(const Layer& L) {
-    scratch_->routes.clear();
+    // Routes stay valid for the next layer when it has the same cells (so the same regions)
+    // and no height its link tests compare with lies between the two layers' thresholds
+    // (so every such test answers the same): the many equal layers of a prismatic part
+    // route their links once. Layer changes depend on the previous layer: never kept.
+    if (routing()) {
+      if (heights_.empty()) heights_ = compared_heights(reach_);
+      const double thr = voxel_detail::layer_threshold(m_, reach_, L.k);
+      const auto cls = static_cast<std::size_t>(
+          std::lower_bound(heights_.begin(), heights_.end(), thr) - heights_.begin());
+      if (cls != route_class_ || L.flags != route_flags_) {
+        scratch_->routes.clear();
+        route_class_ = cls;
+        route_flags_ = L.flags;
+      } else {
+        for (auto it = scratch_->routes.begin(); it != scratch_->routes.end();)
+          it = (*it).first[2] != 0 ? scratch_->routes.erase(it) : std::next(it);
+      }
+    }
     own_start_.resize(L.flags.size());
     for (std::size_t c = 0; c < L.flags.size(); ++c)
       own_start_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
@@ -710,6 +739,9 @@ class Builder {
   double abort_at_ = std::numeric_limits<double>::infinity();
   bool aborted_ = false;
   std::unique_ptr<Builder> dry_sim_;
+  std::vector<double> heights_;                  // compared_heights(reach_), when first needed
+  std::size_t route_class_ = SIZE_MAX;           // heights below the threshold of the routes' layer
+  std::vector<std::uint8_t> route_flags_;        // cells of the routes' layer
   std::vector<std::uint64_t> done_, route_key_;  // regions finished in this layer; a route key
   struct Snapshot {  // the cheapest complete dry run of the layer and its end state
     double cost = std::numeric_limits<double>::infinity();
