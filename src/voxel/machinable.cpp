@@ -202,17 +202,23 @@ std::vector<std::uint8_t> layer_flags(const VoxelModel& m, const Reach& reach, i
   }
   if (!any) return {};
   std::vector<std::uint8_t> f(reach.centre.size(), 0);
+  // Branch-free over each row (this runs for every layer on every column): the flags are
+  // the same comparisons as one test per flag, combined as bits.
+  const auto nx = static_cast<std::size_t>(m.nx);
+  const double* centre = reach.centre.data();
+  const double* lx = reach.link_x.data();
+  const double* ly = reach.link_y.data();
   for (int j = 0; j < m.ny; ++j) {
-    for (int i = 0; i < m.nx; ++i) {
-      const std::size_t c = m.column(i, j);
-      if (stock.empty() || stock[c]) f[c] = kStock;
-      if (reach.centre[c] >= thr) continue;
-      f[c] |= kFree;
-      if (i + 1 < m.nx && reach.link_x[c] < thr && reach.centre[c + 1] < thr) f[c] |= kLinkX;
-      if (j + 1 < m.ny && reach.link_y[c] < thr &&
-          reach.centre[c + static_cast<std::size_t>(m.nx)] < thr) {
-        f[c] |= kLinkY;
-      }
+    const std::size_t row = static_cast<std::size_t>(j) * nx;
+    const bool last_row = j + 1 >= m.ny;
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::size_t c = row + i;
+      const bool has_stock = stock.empty() || stock[c] != 0;
+      const bool is_free = centre[c] < thr;
+      const bool link_x = is_free && i + 1 < nx && lx[c] < thr && centre[c + 1] < thr;
+      const bool link_y = is_free && !last_row && ly[c] < thr && centre[c + nx] < thr;
+      f[c] = static_cast<std::uint8_t>((has_stock ? kStock : 0) | (is_free ? kFree : 0) |
+                                       (link_x ? kLinkX : 0) | (link_y ? kLinkY : 0));
     }
   }
   return f;

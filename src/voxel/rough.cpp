@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -51,7 +54,23 @@ struct Scratch {
   std::vector<std::size_t> queue;
   std::vector<std::size_t> parent;
   std::vector<std::vector<std::size_t>> buckets;
+  // Routes of the layer being planned, shared by its dry runs and its emission. A route
+  // depends only on its end cells, the layer and which cells are cut: the regions already
+  // finished (a bit each), or the previous layer for a layer change. Key: from cell, to
+  // cell, layer-change flag, then the finished regions' bits.
+  std::map<std::vector<std::uint64_t>, std::vector<Vec2>> routes;
 };
+
+// Heights a layer's threshold is compared with by the link tests (base heights, and the
+// cell reach for the paper's rule), sorted, distinct.
+std::vector<double> compared_heights(const Reach& reach) {
+  std::vector<double> v = reach.base;
+  if (reach.rule == OffsetRule::kPaperSquare)
+    v.insert(v.end(), reach.centre.begin(), reach.centre.end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
 
 class Builder {
  public:
@@ -172,22 +191,27 @@ class Builder {
     };
     for (auto& b : sc.buckets)
       b.clear();
-    auto push = [&](std::size_t c, int g) {
+    // hc: the heuristic of c, passed in (found from the popped cell's coordinates) so that
+    // no cell index is divided twice.
+    auto push = [&](std::size_t c, int g, std::size_t hc) {
       sc.stamp[c] = sc.gen;
       sc.dist[c] = g;
-      const std::size_t f = static_cast<std::size_t>(g) + h(c);
+      const std::size_t f = static_cast<std::size_t>(g) + hc;
       if (f >= sc.buckets.size()) sc.buckets.resize(f + 1);
       sc.buckets[f].push_back(c);
     };
     sc.parent[from] = from;
-    push(from, 0);
+    push(from, 0, h(from));
     for (std::size_t f = h(from); f < sc.buckets.size(); ++f) {
       // Last in, first out within a bucket: among equal f the deepest g first, which
       // breaks the many ties of the Manhattan metric towards the target.
       while (!sc.buckets[f].empty()) {
         const std::size_t c = sc.buckets[f].back();
         sc.buckets[f].pop_back();
-        if (static_cast<std::size_t>(sc.dist[c]) + h(c) != f) continue;  // stale entry
+        const long ci = static_cast<long>(c % nx), cj = static_cast<long>(c / nx);
+        const std::size_t hx = static_cast<std::size_t>(std::labs(ci - ti));
+        const std::size_t hy = static_cast<std::size_t>(std::labs(cj - tj));
+        if (static_cast<std::size_t>(sc.dist[c]) + hx + hy != f) continue;  // stale entry
         if (c == to) {
           cells.clear();
           for (std::size_t x = to; x != from; x = sc.parent[x])
@@ -197,17 +221,20 @@ class Builder {
           return true;
         }
         const int g = sc.dist[c] + 1;
-        auto visit = [&](std::size_t d) {
+        auto visit = [&](std::size_t d, std::size_t hd) {
           if ((sc.stamp[d] != sc.gen || g < sc.dist[d]) && ok(d)) {
             sc.parent[d] = c;
-            push(d, g);
+            push(d, g, hd);
           }
         };
-        const std::size_t i = c % nx;
-        if (flags[c] & voxel_detail::kLinkX) visit(c + 1);
-        if (i > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1);
-        if (flags[c] & voxel_detail::kLinkY) visit(c + nx);
-        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx);
+        const std::size_t hx_plus = static_cast<std::size_t>(std::labs(ci + 1 - ti));
+        const std::size_t hx_minus = static_cast<std::size_t>(std::labs(ci - 1 - ti));
+        const std::size_t hy_plus = static_cast<std::size_t>(std::labs(cj + 1 - tj));
+        const std::size_t hy_minus = static_cast<std::size_t>(std::labs(cj - 1 - tj));
+        if (flags[c] & voxel_detail::kLinkX) visit(c + 1, hx_plus + hy);
+        if (ci > 0 && (flags[c - 1] & voxel_detail::kLinkX)) visit(c - 1, hx_minus + hy);
+        if (flags[c] & voxel_detail::kLinkY) visit(c + nx, hx + hy_plus);
+        if (c >= nx && (flags[c - nx] & voxel_detail::kLinkY)) visit(c - nx, hx + hy_minus);
       }
     }
     return false;
@@ -372,12 +399,34 @@ class Builder {
 
   // From the end of the previous layer at its height, straight over to q, then down.
   bool layer_change_clear(Vec2 q) const {
-    const std::vector<std::uint8_t>& prev = prev_flags_;
+    const std::vector<std::uint8_t>& prev = prev_flags();
     return link_clear(prev_k_, pos_, q,
                       [&](std::size_t c) { return (prev[c] & voxel_detail::kFree) != 0; });
   }
 
   void emit_layer(const Layer& L) {
+    // Routes stay valid for the next layer when it has the same cells (so the same regions)
+    // and no height its link tests compare with lies between the two layers' thresholds
+    // (so every such test answers the same): the many equal layers of a prismatic part
+    // route their links once. Layer changes depend on the previous layer: never kept.
+    if (routing()) {
+      if (heights_.empty()) heights_ = compared_heights(reach_);
+      const double thr = voxel_detail::layer_threshold(m_, reach_, L.k);
+      const auto cls = static_cast<std::size_t>(
+          std::lower_bound(heights_.begin(), heights_.end(), thr) - heights_.begin());
+      if (cls != route_class_ || L.flags != route_flags_) {
+        scratch_->routes.clear();
+        route_class_ = cls;
+        route_flags_ = L.flags;
+      } else {
+        for (auto it = scratch_->routes.begin(); it != scratch_->routes.end();)
+          it = (*it).first[2] != 0 ? scratch_->routes.erase(it) : std::next(it);
+      }
+    }
+    own_start_.resize(L.flags.size());
+    for (std::size_t c = 0; c < L.flags.size(); ++c)
+      own_start_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
+    layer_start_ = &own_start_;
     TwoEndsTour tour;
     for (int r = 0; r < static_cast<int>(L.regions.size()); ++r)
       tour.order.push_back(r);
@@ -407,9 +456,22 @@ class Builder {
         candidates.push_back(std::move(back));
       }
       double best = std::numeric_limits<double>::infinity();
+      snap_.cost = std::numeric_limits<double>::infinity();
       dry_run_budget_ = std::min(kDryRunCellBudget, total_budget_);
-      for (TwoEndsTour& cand : candidates) {
-        const double c = refine(L, cand, dry_run(L, cand));
+      const double per_run =
+          static_cast<double>(L.flags.size()) * static_cast<double>(L.regions.size());
+      for (std::size_t ci = 0; ci < candidates.size(); ++ci) {
+        TwoEndsTour& cand = candidates[ci];
+        // A tour equal to an earlier candidate costs the same and would not replace it.
+        bool seen = false;
+        for (std::size_t cj = 0; cj < ci && !seen; ++cj)
+          seen = candidates[cj].order == cand.order && candidates[cj].flipped == cand.flipped;
+        if (seen) continue;
+        // When refine() cannot afford a move, only whether this tour beats `best` matters:
+        // its dry run may stop as soon as it cannot (the cost only grows while emitting).
+        const double bound =
+            dry_run_budget_ >= per_run ? std::numeric_limits<double>::infinity() : best;
+        const double c = refine(L, cand, dry_run(L, cand, bound));
         if (c < best) {
           best = c;
           tour = cand;
@@ -417,8 +479,20 @@ class Builder {
       }
       total_budget_ -= std::min(kDryRunCellBudget, total_budget_) - dry_run_budget_;
       plan_tour_ = tour;
+      if (snap_.cost < std::numeric_limits<double>::infinity() && snap_.tour.order == tour.order &&
+          snap_.tour.flipped == tour.flipped) {
+        tp_->moves.insert(tp_->moves.end(), snap_.moves.begin(), snap_.moves.end());
+        metrics_->lift_offs += snap_.lift_offs;
+        air_ += snap_.air;
+        pos_ = snap_.pos;
+        has_pos_ = snap_.has_pos;
+        last_ = snap_.last;
+        has_last_ = snap_.has_last;
+        started_layer_ = snap_.started_layer;
+        tour.order.clear();  // emitted
+      }
     }
-    emit_tour(L, tour);
+    if (!tour.order.empty()) emit_tour(L, tour);
     prev_flags_ = L.flags;
     prev_k_ = L.k;
   }
@@ -443,7 +517,7 @@ class Builder {
             cand.order.insert(cand.order.begin() + static_cast<std::ptrdiff_t>(k), r);
             if (flip) cand.flipped[static_cast<std::size_t>(r)] ^= 1;
             dry_run_budget_ -= per_run;
-            const double c = dry_run(L, cand);
+            const double c = dry_run(L, cand, best - 1e-9);
             if (c < best - 1e-9) {
               best = c;
               tour = std::move(cand);
@@ -457,36 +531,75 @@ class Builder {
   }
 
   // Air path plus lift penalties of emitting this layer with `tour`, without emitting it.
-  double dry_run(const Layer& L, const TwoEndsTour& tour) const {
-    Builder sim = *this;
-    Toolpath scratch;
-    RoughMetrics sm;
-    sim.tp_ = &scratch;
-    sim.metrics_ = &sm;
+  // Stops early, returning infinity, once the cost reaches `bound` (the caller only asks
+  // whether the tour costs less than that).
+  double dry_run(const Layer& L, const TwoEndsTour& tour,
+                 double bound = std::numeric_limits<double>::infinity()) {
+    // A copy of the emitter state a tour reads and writes; the planning state (plan_*) and
+    // the layer-sized buffers are not copied: cleared_ is rebuilt from the layer's start
+    // state, prev_flags_ is only read, so the copy borrows this builder's buffers.
+    dry_tp_.moves.clear();
+    dry_metrics_ = RoughMetrics{};
+    if (!dry_sim_)
+      dry_sim_ = std::make_unique<Builder>(m_, reach_, p_, dry_tp_, dry_metrics_, *scratch_);
+    Builder& sim = *dry_sim_;
+    sim.clear_z_ = clear_z_;
+    sim.pos_ = pos_;
+    sim.has_pos_ = has_pos_;
+    sim.last_ = last_;
+    sim.has_last_ = has_last_;
+    sim.prev_k_ = prev_k_;
+    sim.started_layer_ = started_layer_;
     sim.air_ = 0.0;
+    sim.borrowed_prev_ = &prev_flags_;
+    sim.layer_start_ = layer_start_;
+    sim.abort_at_ = bound;
     sim.emit_tour(L, tour);
-    return sim.air_ + static_cast<double>(sm.lift_offs) * p_.lift_penalty_mm;
+    if (sim.aborted_) return std::numeric_limits<double>::infinity();
+    const double cost = sim.air_ + static_cast<double>(dry_metrics_.lift_offs) * p_.lift_penalty_mm;
+    // Keep the cheapest complete dry run of the layer: when its tour is the one chosen,
+    // emitting it again would give the same moves (same start state, same tour).
+    if (cost < snap_.cost) {
+      snap_.cost = cost;
+      snap_.tour = tour;
+      std::swap(snap_.moves, dry_tp_.moves);
+      snap_.lift_offs = dry_metrics_.lift_offs;
+      snap_.air = sim.air_;
+      snap_.pos = sim.pos_;
+      snap_.has_pos = sim.has_pos_;
+      snap_.last = sim.last_;
+      snap_.has_last = sim.has_last_;
+      snap_.started_layer = sim.started_layer_;
+    }
+    return cost;
   }
 
   void emit_tour(const Layer& L, const TwoEndsTour& tour) {
-    // Cells without stock hold nothing to cut: links may cross them from the start.
-    cleared_.resize(L.flags.size());
-    for (std::size_t c = 0; c < L.flags.size(); ++c) {
-      cleared_[c] = (L.flags[c] & voxel_detail::kStock) ? 0 : 1;
-    }
+    // Cells without stock hold nothing to cut: links may cross them from the start. The
+    // start state is built once per layer and copied for every (dry) run.
+    aborted_ = false;
+    cleared_ = *layer_start_;
+    done_.assign((L.regions.size() + 63) / 64, 0);
     for (int r : tour.order) {
+      if (air_ + static_cast<double>(metrics_->lift_offs) * p_.lift_penalty_mm >= abort_at_) {
+        aborted_ = true;
+        return;
+      }
       const CellPath& path = L.regions[static_cast<std::size_t>(r)];
       const bool rev = tour.flipped[static_cast<std::size_t>(r)] != 0;
       const std::size_t n = path.pts.size();
       auto pt = [&](std::size_t t) { return path.pts[rev ? n - 1 - t : t]; };
       auto cut = [&](std::size_t s) { return path.cutting[rev ? n - 2 - s : s] != 0; };
       go_to(L, at(pt(0)));
+      if (aborted_) return;
       mark(pt(0), pt(0));
       for (std::size_t s = 0; s + 1 < n; ++s) {
         feed(to_vec3(at(pt(s + 1)), m_.layer_z(L.k)), p_.feed_mm_min, cut(s));
         mark(pt(s), pt(s + 1));
       }
       pos_ = at(pt(n - 1));
+      done_[static_cast<std::size_t>(r) / 64] |= std::uint64_t{1}
+                                                 << (static_cast<unsigned>(r) % 64);
     }
   }
 
@@ -496,6 +609,15 @@ class Builder {
 
  private:
   void go_to(const Layer& L, Vec2 q) {
+    // Every way to q adds at least the straight distance to the air path: a dry run that
+    // cannot stay under its bound stops before routing (margin for rounding).
+    if (has_pos_ && abort_at_ < std::numeric_limits<double>::infinity() &&
+        air_ + static_cast<double>(metrics_->lift_offs) * p_.lift_penalty_mm +
+                distance(pos_, q) * (1.0 - 1e-9) >=
+            abort_at_) {
+      aborted_ = true;
+      return;
+    }
     const double z = m_.layer_z(L.k);
     const bool same_layer = started_layer_ == L.k;
     started_layer_ = L.k;
@@ -512,7 +634,9 @@ class Builder {
       // cheaper than going up and over (not for the plain zig-zag baseline, which links
       // straight or lifts, as a CAM system without segmentation does).
       const std::vector<Vec2> way =
-          routing() ? route(L.k, L.flags, pos_, q, cut) : std::vector<Vec2>{};
+          routing()
+              ? cached_route(false, pos_, q, [&] { return route(L.k, L.flags, pos_, q, cut); })
+              : std::vector<Vec2>{};
       if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
         for (const Vec2& w : way)
           feed(to_vec3(w, z), p_.feed_mm_min, false);
@@ -527,8 +651,12 @@ class Builder {
       }
       const std::vector<Vec2> way =
           routing()
-              ? route(prev_k_, prev_flags_, pos_, q,
-                      [&](std::size_t c) { return (prev_flags_[c] & voxel_detail::kFree) != 0; })
+              ? cached_route(true, pos_, q,
+                             [&] {
+                               return route(prev_k_, prev_flags(), pos_, q, [&](std::size_t c) {
+                                 return (prev_flags()[c] & voxel_detail::kFree) != 0;
+                               });
+                             })
               : std::vector<Vec2>{};
       if (!way.empty() && polyline_length(pos_, way) < lift_cost(L.k, pos_, q)) {
         for (const Vec2& w : way)
@@ -544,6 +672,17 @@ class Builder {
     rapid(to_vec3(q, clear_z_));
     rapid(to_vec3(q, m_.layer_top(L.k) + kApproachMm));
     plunge(z);
+  }
+
+  template <class F>
+  const std::vector<Vec2>& cached_route(bool layer_change, Vec2 p, Vec2 q, F&& compute) {
+    std::vector<std::uint64_t>& key = route_key_;
+    key.assign({cell_at(p), cell_at(q), layer_change ? 1u : 0u});
+    if (!layer_change) key.insert(key.end(), done_.begin(), done_.end());
+    auto& routes = scratch_->routes;
+    auto it = routes.find(key);
+    if (it == routes.end()) it = routes.emplace(key, compute()).first;
+    return it->second;
   }
 
   void mark(voxel_detail::CellPoint a, voxel_detail::CellPoint b) {
@@ -592,6 +731,36 @@ class Builder {
   bool has_last_ = false;
   int prev_k_ = -1, started_layer_ = -1;
   std::vector<std::uint8_t> prev_flags_, cleared_;
+  // Dry runs: the previous layer's flags and the layer's start state are borrowed from the
+  // builder that runs them; the simulating builder and its output are reused.
+  const std::vector<std::uint8_t>* borrowed_prev_ = nullptr;
+  std::vector<std::uint8_t> own_start_;
+  const std::vector<std::uint8_t>* layer_start_ = &own_start_;
+  double abort_at_ = std::numeric_limits<double>::infinity();
+  bool aborted_ = false;
+  std::unique_ptr<Builder> dry_sim_;
+  std::vector<double> heights_;                  // compared_heights(reach_), when first needed
+  std::size_t route_class_ = SIZE_MAX;           // heights below the threshold of the routes' layer
+  std::vector<std::uint8_t> route_flags_;        // cells of the routes' layer
+  std::vector<std::uint64_t> done_, route_key_;  // regions finished in this layer; a route key
+  struct Snapshot {  // the cheapest complete dry run of the layer and its end state
+    double cost = std::numeric_limits<double>::infinity();
+    TwoEndsTour tour;
+    std::vector<Move> moves;
+    std::size_t lift_offs = 0;
+    double air = 0.0;
+    Vec2 pos;
+    bool has_pos = false;
+    Vec3 last;
+    bool has_last = false;
+    int started_layer = -1;
+  } snap_;
+  Toolpath dry_tp_;
+  RoughMetrics dry_metrics_;
+
+  const std::vector<std::uint8_t>& prev_flags() const {
+    return borrowed_prev_ != nullptr ? *borrowed_prev_ : prev_flags_;
+  }
 };
 
 void measure(const Toolpath& tp, RoughMetrics& m) {
