@@ -36,10 +36,6 @@ Result<OperationOutput> run(const OperationInput& in) {
   return out;
 }
 
-Param number(const char* key, double def, const char* help) {
-  return Param{key, ParamType::kNumber, def, help, false};
-}
-
 const OperationRegistrar kRegistrar(Operation{
     "contour",
     "contour-parallel pocket clearing (offset rings, helix entry)",
@@ -47,19 +43,20 @@ const OperationRegistrar kRegistrar(Operation{
     true,
     true,
     {
-        number("stepover", 0.0, "radial stepover between rings, mm (0 = 10 % of the diameter)"),
+        number_param("stepover", 0.0,
+                     "radial stepover between rings, mm (0 = 10 % of the diameter)"),
         Param{"outside_in", ParamType::kBool, false, "cut from the wall inwards", false},
         Param{"conventional", ParamType::kBool, false, "conventional instead of climb milling",
               false},
-        number("depth", 6.0, "pocket depth below the top, mm"),
-        number("stepdown", 0.0, "depth per layer, mm (0 = whole depth)"),
-        number("floor_stock", 0.0, "stock left on the floor, mm"),
-        number("wall_stock", 0.0, "stock left on walls and islands, mm"),
-        number("top_z", 0.0, "top of the stock, mm"),
-        number("clearance_z", 5.0, "rapid plane, mm"),
-        number("feed", 1000.0, "cutting feed, mm/min"),
-        number("plunge_feed", 300.0, "helix feed, mm/min"),
-        number("ramp_angle", 3.0, "helix descent angle, degrees"),
+        number_param("depth", 6.0, "pocket depth below the top, mm"),
+        number_param("stepdown", 0.0, "depth per layer, mm (0 = whole depth)"),
+        number_param("floor_stock", 0.0, "stock left on the floor, mm"),
+        number_param("wall_stock", 0.0, "stock left on walls and islands, mm"),
+        number_param("top_z", 0.0, "top of the stock, mm"),
+        number_param("clearance_z", 5.0, "rapid plane, mm"),
+        number_param("feed", 1000.0, "cutting feed, mm/min"),
+        number_param("plunge_feed", 300.0, "helix feed, mm/min"),
+        number_param("ramp_angle", 3.0, "helix descent angle, degrees"),
     },
     run});
 

@@ -31,6 +31,11 @@ struct Param {
   bool optional = false;         ///< may be absent (run() sees null)
 };
 
+/// A number parameter with a default, the common case: number_param("stepover", 1.0, "mm").
+inline Param number_param(std::string key, double default_value, std::string help) {
+  return Param{std::move(key), ParamType::kNumber, default_value, std::move(help), false};
+}
+
 /// What run() gets.
 struct OperationInput {
   std::string input_path;    ///< the positional input (pocket, STL, G-code, CSV), as given
