@@ -4,25 +4,14 @@
 #include <cmath>
 #include <random>
 
+#include "sim/sim_test_util.h"
 #include "swarf/sim/coefficients.h"
 
 namespace swarf::sim {
 namespace {
 
-// Closed-form mean forces of a cylindrical end mill (Altintas), an independent generator of
-// "measurements" for a flat end mill.
-Vec3 altintas_mean(const CuttingCoefficients& k, int n, double a, double ft, double st, double ex) {
-  auto f = [&](double t) {
-    return Vec3{n * a * ft / (8 * kPi) *
-                        (k.ktc_n_mm2 * std::cos(2 * t) - k.krc_n_mm2 * (2 * t - std::sin(2 * t))) +
-                    n * a / (2 * kPi) * (-k.kte_n_mm * std::sin(t) + k.kre_n_mm * std::cos(t)),
-                n * a * ft / (8 * kPi) *
-                        (k.ktc_n_mm2 * (2 * t - std::sin(2 * t)) + k.krc_n_mm2 * std::cos(2 * t)) -
-                    n * a / (2 * kPi) * (k.kte_n_mm * std::cos(t) + k.kre_n_mm * std::sin(t)),
-                -n * a / (2 * kPi) * (-k.kac_n_mm2 * ft * std::cos(t) + k.kae_n_mm * t)};
-  };
-  return f(ex) - f(st);
-}
+// The closed-form means (Altintas) are an independent generator of flat-end-mill "measurements".
+using testing::altintas_mean;
 
 // Box-Muller on a fixed-seed engine: the same noise on every platform.
 double gauss(std::mt19937& rng) {
@@ -31,13 +20,7 @@ double gauss(std::mt19937& rng) {
 }
 
 TEST(CoefficientFit, RecoversFlatEndMillCoefficientsFromNoisyCuts) {
-  CuttingCoefficients truth;
-  truth.ktc_n_mm2 = 796.0;
-  truth.krc_n_mm2 = 168.0;
-  truth.kac_n_mm2 = 222.0;
-  truth.kte_n_mm = 27.7;
-  truth.kre_n_mm = 30.8;
-  truth.kae_n_mm = 2.3;
+  const CuttingCoefficients truth = testing::al7075();
   CutterGeometry g;
   g.kind = ToolKind::kFlat;
   g.radius_mm = 5.0;

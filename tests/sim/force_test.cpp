@@ -5,22 +5,13 @@
 
 #include <cmath>
 
+#include "sim/sim_test_util.h"
 #include "swarf/sim/force.h"
 
 namespace swarf::sim {
 namespace {
 
-// Altintas' Al7075 coefficients: the axial terms are large enough to be checked.
-CuttingCoefficients al7075() {
-  CuttingCoefficients k;
-  k.ktc_n_mm2 = 796.0;
-  k.krc_n_mm2 = 168.0;
-  k.kac_n_mm2 = 222.0;
-  k.kte_n_mm = 27.7;
-  k.kre_n_mm = 30.8;
-  k.kae_n_mm = 2.3;
-  return k;
-}
+using testing::al7075;
 
 // Altintas' immersion angle of a point relative to the tool axis, in [0, 2π).
 double immersion(Vec3 p) {
@@ -33,24 +24,8 @@ struct Cut {
   double start_rad, exit_rad;
 };
 
-// Closed-form mean forces of a cylindrical end mill (Altintas, Manufacturing Automation,
-// Eq. 2.31 with edge forces), feed along +x. F_z is -F_a in the seed's element frame.
 Vec3 closed_form_mean(const CuttingCoefficients& k, int flutes, double axial, double ft, Cut c) {
-  auto fx = [&](double t) {
-    return flutes * axial * ft / (8 * kPi) *
-               (k.ktc_n_mm2 * std::cos(2 * t) - k.krc_n_mm2 * (2 * t - std::sin(2 * t))) +
-           flutes * axial / (2 * kPi) * (-k.kte_n_mm * std::sin(t) + k.kre_n_mm * std::cos(t));
-  };
-  auto fy = [&](double t) {
-    return flutes * axial * ft / (8 * kPi) *
-               (k.ktc_n_mm2 * (2 * t - std::sin(2 * t)) + k.krc_n_mm2 * std::cos(2 * t)) -
-           flutes * axial / (2 * kPi) * (k.kte_n_mm * std::cos(t) + k.kre_n_mm * std::sin(t));
-  };
-  auto fz = [&](double t) {
-    return -flutes * axial / (2 * kPi) * (-k.kac_n_mm2 * ft * std::cos(t) + k.kae_n_mm * t);
-  };
-  return {fx(c.exit_rad) - fx(c.start_rad), fy(c.exit_rad) - fy(c.start_rad),
-          fz(c.exit_rad) - fz(c.start_rad)};
+  return testing::altintas_mean(k, flutes, axial, ft, c.start_rad, c.exit_rad);
 }
 
 void expect_close(Vec3 got, Vec3 want, double rel) {

@@ -3,21 +3,13 @@
 
 #include <cmath>
 
+#include "sim/sim_test_util.h"
 #include "swarf/sim/simulate.h"
 
 namespace swarf::sim {
 namespace {
 
-CuttingCoefficients al7075() {
-  CuttingCoefficients k;
-  k.ktc_n_mm2 = 796.0;
-  k.krc_n_mm2 = 168.0;
-  k.kac_n_mm2 = 222.0;
-  k.kte_n_mm = 27.7;
-  k.kre_n_mm = 30.8;
-  k.kae_n_mm = 2.3;
-  return k;
-}
+using testing::al7075;
 
 Tool flat10() {
   Tool t = flat_mill(10.0);
@@ -99,17 +91,7 @@ TEST(Simulate, SideCutEngagedArcAndMeanForceMatchDownMilling) {
   const double st = kPi - std::acos(1.0 - 2.0 / 5.0);
   EXPECT_NEAR(r->moves[2].engaged_arc_deg, rad_to_deg(kPi - st), 1.5);
   const CuttingCoefficients k = al7075();
-  const double n = 4, a = 3, ft = 0.1;
-  auto f = [&](double t) {
-    return Vec3{n * a * ft / (8 * kPi) *
-                        (k.ktc_n_mm2 * std::cos(2 * t) - k.krc_n_mm2 * (2 * t - std::sin(2 * t))) +
-                    n * a / (2 * kPi) * (-k.kte_n_mm * std::sin(t) + k.kre_n_mm * std::cos(t)),
-                n * a * ft / (8 * kPi) *
-                        (k.ktc_n_mm2 * (2 * t - std::sin(2 * t)) + k.krc_n_mm2 * std::cos(2 * t)) -
-                    n * a / (2 * kPi) * (k.kte_n_mm * std::cos(t) + k.kre_n_mm * std::sin(t)),
-                -n * a / (2 * kPi) * (-k.kac_n_mm2 * ft * std::cos(t) + k.kae_n_mm * t)};
-  };
-  const Vec3 want = f(kPi) - f(st);
+  const Vec3 want = testing::altintas_mean(k, 4, 3.0, 0.1, st, kPi);
   Vec3 sum;
   int count = 0;
   const double t0 = r->moves[2].t_start_s;
