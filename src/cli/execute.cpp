@@ -132,6 +132,8 @@ std::string format_summary(const std::string& name, const json& summary) {
 }  // namespace
 
 Result<std::string> execute(const Operation& op, OperationInput input, const OutputSpec& out) {
+  input.wants_report = !out.report.empty();
+  input.wants_csv = !out.csv.empty();
   Result<OperationOutput> result = op.run(input);
   if (!result.ok()) return result.status();
   OperationOutput& res = *result;

@@ -97,10 +97,12 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;
   out.summary["summary"] = summary_line(s);
-  out.csv_override = steps_csv(*r);
-  out.report_files["steps.csv"] = *out.csv_override;
-  out.report_files["engagement.svg"] = engagement_chart(*r);
-  out.report_files["engagement.png"] = png_bytes(engagement_picture(*r));
+  if (in.wants_csv || in.wants_report) out.csv_override = steps_csv(*r);
+  if (in.wants_report) {
+    out.report_files["steps.csv"] = *out.csv_override;
+    out.report_files["engagement.svg"] = engagement_chart(*r);
+    out.report_files["engagement.png"] = png_bytes(engagement_picture(*r));
+  }
   out.plot_background = pocket->region;
   return out;
 }

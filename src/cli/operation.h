@@ -42,6 +42,10 @@ struct OperationInput {
   std::optional<Tool> tool;  ///< from --tool / --tool-library, when the operation takes one
   nlohmann::json params;     ///< every declared key, defaults filled in
   const Context* ctx = nullptr;
+  /// Whether a --report folder / --csv file was asked for: operations may skip building
+  /// report files (pictures, tables) nobody will read. Set by execute().
+  bool wants_report = true;
+  bool wants_csv = true;
 };
 
 /// What run() returns; the framework writes it (atomically) where the user asked.

@@ -1,5 +1,6 @@
 #include "pocket/distance_transform.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swarf::pocket {
@@ -59,18 +60,37 @@ void dt1d(float* f, int n, std::ptrdiff_t stride, std::vector<double>& d, std::v
 
 std::vector<float> squared_distance_transform(const BitImage& features, bool feature_value) {
   const int w = features.width(), h = features.height();
-  std::vector<float> f(static_cast<std::size_t>(w) * h);
+  const std::size_t wz = static_cast<std::size_t>(w);
+  std::vector<float> f(wz * static_cast<std::size_t>(h));
+  // Columns: for a binary image the 1D transform is the squared distance to the nearest
+  // feature in the column, found by one sweep down and one up, a row at a time (in memory
+  // order, unlike a column-wise parabola pass). Exact: whole numbers, kept exactly in float.
+  constexpr int kFar = 1 << 28;
+  std::vector<int> run(wz, kFar);
+  std::vector<int> down(wz * static_cast<std::size_t>(h));
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i)
-      f[static_cast<std::size_t>(j) * w + i] = features.get(i, j) == feature_value ? 0.f : kInf;
-  const int n = std::max(w, h);
-  std::vector<double> d(n);
-  std::vector<int> v(n);
-  std::vector<double> z(n + 1);
-  for (int i = 0; i < w; ++i)
-    dt1d(f.data() + i, h, w, d, v, z);  // columns
+    for (int i = 0; i < w; ++i) {
+      run[static_cast<std::size_t>(i)] = features.get(i, j) == feature_value
+                                             ? 0
+                                             : std::min(kFar, run[static_cast<std::size_t>(i)] + 1);
+      down[static_cast<std::size_t>(j) * wz + static_cast<std::size_t>(i)] =
+          run[static_cast<std::size_t>(i)];
+    }
+  std::fill(run.begin(), run.end(), kFar);
+  for (int j = h - 1; j >= 0; --j)
+    for (int i = 0; i < w; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * wz + static_cast<std::size_t>(i);
+      int& r = run[static_cast<std::size_t>(i)];
+      r = down[k] == 0 ? 0 : std::min(kFar, r + 1);
+      const int d = std::min(r, down[k]);
+      f[k] = d >= kFar ? kInf : static_cast<float>(static_cast<double>(d) * d);
+    }
+  const int n = w;
+  std::vector<double> d(static_cast<std::size_t>(n));
+  std::vector<int> v(static_cast<std::size_t>(n));
+  std::vector<double> z(static_cast<std::size_t>(n) + 1);
   for (int j = 0; j < h; ++j)
-    dt1d(f.data() + static_cast<std::size_t>(j) * w, w, 1, d, v, z);
+    dt1d(f.data() + static_cast<std::size_t>(j) * wz, w, 1, d, v, z);
   return f;
 }
 

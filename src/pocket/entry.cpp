@@ -67,22 +67,27 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
                          " needs more than 60 million pixels; raise resolution_mm");
   m.pocket = rasterize(pocket.region, m.grid);
   // Forbidden: outside the pocket, or closer to a wall than wall stock + half a pixel, by
-  // exact distance to the outline for pixels near it (the grid alone is only good to a
-  // pixel). The half pixel keeps the true disk within about 0.2 pixel of the wall.
-  const auto outside_sq = squared_distance_transform(m.pocket, false);
+  // exact distance to the outline (the grid alone is only good to a pixel). The half pixel
+  // keeps the true disk within about 0.2 pixel of the wall. Only pixels in the box of an
+  // edge grown by that distance can be that close to it, so each edge tests just those.
   m.forbidden = BitImage(m.grid.width, m.grid.height);
   const double keep = p.wall_stock_mm + 0.5 * m.h;
-  const double near_px = keep / m.h + 2.0;
   for (int j = 0; j < m.grid.height; ++j)
-    for (int i = 0; i < m.grid.width; ++i) {
-      if (!m.pocket.get(i, j)) {
-        m.forbidden.set(i, j, true);
-        continue;
-      }
-      const double d_px = std::sqrt(static_cast<double>(outside_sq[m.grid.index(i, j)]));
-      if (d_px > near_px) continue;
-      if (distance_to_rings(pocket.region, m.grid.to_world(i, j)) < keep)
-        m.forbidden.set(i, j, true);
+    for (int i = 0; i < m.grid.width; ++i)
+      if (!m.pocket.get(i, j)) m.forbidden.set(i, j, true);
+  for (const Ring& ring : pocket.region.rings)
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+      const Vec2 lo = m.grid.to_px({std::min(a.x, b.x) - keep, std::min(a.y, b.y) - keep});
+      const Vec2 hi = m.grid.to_px({std::max(a.x, b.x) + keep, std::max(a.y, b.y) + keep});
+      const int i0 = std::max(0, static_cast<int>(std::floor(lo.x)));
+      const int i1 = std::min(m.grid.width - 1, static_cast<int>(std::ceil(hi.x)));
+      const int j0 = std::max(0, static_cast<int>(std::floor(lo.y)));
+      const int j1 = std::min(m.grid.height - 1, static_cast<int>(std::ceil(hi.y)));
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+          if (!m.forbidden.get(i, j) && point_segment_distance(m.grid.to_world(i, j), a, b) < keep)
+            m.forbidden.set(i, j, true);
     }
   m.clearance_sq = squared_distance_transform(m.forbidden, true);
   // Material is what the tool can reach: pixels within R of a centre whose disk is free.

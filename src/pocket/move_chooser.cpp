@@ -49,7 +49,9 @@ class Chooser {
     k.p = pos_ + d * step_;
     int& memo = memo_[theta + 180];
     if (memo == kUnprobed) {
-      memo = stock_.probe(pos_, k.p);
+      // Beyond twice the target a candidate is never chosen and only compares as "more
+      // than the target" (best_delta <= target), so its exact count is not needed.
+      memo = stock_.probe(pos_, k.p, static_cast<int>(2.0 * m_.target_px) + 1);
       // A long (non-cutting) step also checks its inner points: a chord between two free
       // centres can clip a convex corner of an island.
       for (double u = m_.step_mm; memo >= 0 && u < step_ - 1e-9; u += m_.step_mm)
@@ -247,7 +249,7 @@ bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& d
       for (int a = 0; a<360; a += window_mm> 0.0 ? 30 : 15) {
         const Vec2 u{std::cos(deg_to_rad(a)), std::sin(deg_to_rad(a))};
         const Vec2 c = q + u * ring;
-        if (stock.gouges(c) || stock.material_in_disk(c, m.radius_mm + 0.5 * m.h) > 0) continue;
+        if (stock.gouges(c) || stock.material_in_disk(c, m.radius_mm + 0.5 * m.h, 0) > 0) continue;
         at = c;
         dir = -u;
         pi = px[k].i;
@@ -298,8 +300,8 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
       // matters; the paper's conclusion suggests adaptive step lengths).
       Candidate c;
       StepKind kind = StepKind::kCut;
-      const bool near = stock.material_in_disk(pos, reach) > 0;
-      const bool far_clear = !near && stock.material_in_disk(pos, far_reach) == 0;
+      const bool near = stock.material_in_disk(pos, reach, 0) > 0;
+      const bool far_clear = !near && stock.material_in_disk(pos, far_reach, 0) == 0;
       chooser.set_state(pos, dir, far_clear ? 3.0 * m.step_mm : m.step_mm);
       if (near) c = chooser.best_move(last_theta);
       if (!c.valid) {

@@ -28,50 +28,26 @@ void BitImage::set(int i, int j, bool v) {
 }
 
 namespace {
-// Portable SWAR popcount: without -mpopcnt, std::popcount becomes a libgcc call that cost a
-// third of the run time; this stays inline on every target.
-inline int popcount(std::uint64_t x) {
-  x = x - ((x >> 1) & 0x5555555555555555ull);
-  x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
-  x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
-  return static_cast<int>((x * 0x0101010101010101ull) >> 56);
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define SWARF_POCKET_DISPATCH 1
+#define SWARF_TARGET_HW __attribute__((target("popcnt,sse4.1")))
+bool cpu_has_hw() {
+  static const bool has = __builtin_cpu_supports("popcnt") && __builtin_cpu_supports("sse4.1");
+  return has;
 }
-inline std::uint64_t mask_from(int b) {
-  return ~std::uint64_t{0} << static_cast<unsigned>(b);
-}
-inline std::uint64_t mask_to(int b) {  // bits 0..b inclusive
-  return b >= 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << static_cast<unsigned>(b + 1)) - 1;
-}
+#else
+#define SWARF_TARGET_HW
+#endif
+// Row callbacks must be inlined into the kHw functions to be compiled for their target.
+#define SWARF_INLINE __attribute__((always_inline))
+
 }  // namespace
-
-int BitImage::count(int j, int x0, int x1) const {
-  const std::uint64_t* r = row(j);
-  const int w0 = x0 >> 6, w1 = x1 >> 6;
-  if (w0 == w1) return popcount(r[w0] & mask_from(x0 & 63) & mask_to(x1 & 63));
-  int n = popcount(r[w0] & mask_from(x0 & 63));
-  for (int w = w0 + 1; w < w1; ++w)
-    n += popcount(r[w]);
-  return n + popcount(r[w1] & mask_to(x1 & 63));
-}
-
-int BitImage::clear(int j, int x0, int x1) {
-  std::uint64_t* r = row(j);
-  const int w0 = x0 >> 6, w1 = x1 >> 6;
-  int n = 0;
-  for (int w = w0; w <= w1; ++w) {
-    std::uint64_t m = ~std::uint64_t{0};
-    if (w == w0) m &= mask_from(x0 & 63);
-    if (w == w1) m &= mask_to(x1 & 63);
-    n += popcount(r[w] & m);
-    r[w] &= ~m;
-  }
-  return n;
-}
 
 std::size_t BitImage::count_all() const {
   std::size_t n = 0;
   for (std::uint64_t w : bits_)
-    n += static_cast<std::size_t>(popcount(w));
+    n += static_cast<std::size_t>(popcount<>(w));
   return n;
 }
 
@@ -120,7 +96,7 @@ PixelStock::PixelStock(Grid grid, BitImage material, BitImage forbidden, double 
 // radius_px_). Returns false when the disk leaves the image (counts as a gouge: the image
 // border is far outside the pocket).
 template <class RowFn>
-bool PixelStock::crescent_rows(Vec2 from, Vec2 to, RowFn&& fn) const {
+[[gnu::always_inline]] inline bool PixelStock::crescent_rows(Vec2 from, Vec2 to, RowFn&& fn) const {
   // Centres' y snapped to 1/kSub pixel so that row half widths come from the table.
   const Vec2 a = grid_.to_px(from), b = grid_.to_px(to);
   const double r = radius_px_;
@@ -160,7 +136,8 @@ bool PixelStock::crescent_rows(Vec2 from, Vec2 to, RowFn&& fn) const {
   return true;
 }
 
-int PixelStock::probe(Vec2 from, Vec2 to) const {
+template <bool kHw>
+[[gnu::always_inline]] inline int PixelStock::probe_t(Vec2 from, Vec2 to, int enough) const {
   int n = 0;
   bool gouge = false;
   if (clearance_sq_ != nullptr) {
@@ -176,32 +153,35 @@ int PixelStock::probe(Vec2 from, Vec2 to) const {
       // without scanning (boundary moves and the scans probe many such moves).
       if (c + 0.71 < radius_px_ - 0.05) return kGouge;
       if (c - 0.71 > radius_px_ + 1.0) {
-        crescent_rows(from, to, [&](int jj, int x0, int x1) {
-          n += material_.count(jj, x0, x1);
-          return true;
+        // No gouge is possible here, so the count may stop early.
+        crescent_rows(from, to, [&](int jj, int x0, int x1) SWARF_INLINE {
+          n += material_.count<kHw>(jj, x0, x1);
+          return n <= enough;
         });
         return n;
       }
     }
   }
-  const bool inside = crescent_rows(from, to, [&](int j, int x0, int x1) {
-    if (forbidden_.count(j, x0, x1) > 0) {
+  const bool inside = crescent_rows(from, to, [&](int j, int x0, int x1) SWARF_INLINE {
+    if (forbidden_.count<kHw>(j, x0, x1) > 0) {
       gouge = true;
       return false;
     }
-    n += material_.count(j, x0, x1);
+    n += material_.count<kHw>(j, x0, x1);
     return true;
   });
   return (!inside || gouge) ? kGouge : n;
 }
 
-int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
+template <bool kHw>
+[[gnu::always_inline]] inline int PixelStock::cut_t(Vec2 from, Vec2 to, CutVisitor visit,
+                                                    void* user) {
   int n = 0;
-  crescent_rows(from, to, [&](int j, int x0, int x1) {
+  crescent_rows(from, to, [&](int j, int x0, int x1) SWARF_INLINE {
     if (visit != nullptr)
       for (int i = x0; i <= x1; ++i)
         if (material_.get(i, j)) visit(user, i, j);
-    n += material_.clear(j, x0, x1);
+    n += material_.clear<kHw>(j, x0, x1);
     return true;
   });
   return n;
@@ -214,7 +194,8 @@ Vec2 far_away(Vec2 c, double r_mm) {
 }
 }  // namespace
 
-bool PixelStock::gouges(Vec2 centre) const {
+template <bool kHw>
+[[gnu::always_inline]] inline bool PixelStock::gouges_t(Vec2 centre) const {
   bool gouge = false;
   if (clearance_sq_ != nullptr) {
     // Decided by the clearance of the nearest pixel when it is more than a pixel from R.
@@ -226,15 +207,17 @@ bool PixelStock::gouges(Vec2 centre) const {
       if (c + 0.71 < radius_px_ - 1.0) return true;
     }
   }
-  const bool inside =
-      crescent_rows(far_away(centre, tool_radius_mm()), centre, [&](int j, int x0, int x1) {
-        gouge = forbidden_.count(j, x0, x1) > 0;
-        return !gouge;
-      });
+  const bool inside = crescent_rows(far_away(centre, tool_radius_mm()), centre,
+                                    [&](int j, int x0, int x1) SWARF_INLINE {
+                                      gouge = forbidden_.count<kHw>(j, x0, x1) > 0;
+                                      return !gouge;
+                                    });
   return gouge || !inside;
 }
 
-int PixelStock::material_in_disk(Vec2 centre, double radius_mm) const {
+template <bool kHw>
+[[gnu::always_inline]] inline int PixelStock::material_in_disk_t(Vec2 centre, double radius_mm,
+                                                                 int enough) const {
   const Vec2 c = grid_.to_px(centre);
   const double r = radius_mm / grid_.h;
   int n = 0;
@@ -245,9 +228,49 @@ int PixelStock::material_in_disk(Vec2 centre, double radius_mm) const {
     const double half = std::sqrt(std::max(0.0, r * r - dy * dy));
     const int x0 = std::max(0, static_cast<int>(std::ceil(c.x - half)));
     const int x1 = std::min(grid_.width - 1, static_cast<int>(std::floor(c.x + half)));
-    if (x0 <= x1) n += material_.count(j, x0, x1);
+    if (x0 <= x1) n += material_.count<kHw>(j, x0, x1);
+    if (n > enough) break;
   }
   return n;
+}
+
+SWARF_TARGET_HW int PixelStock::probe_hw(Vec2 from, Vec2 to, int enough) const {
+  return probe_t<true>(from, to, enough);
+}
+SWARF_TARGET_HW int PixelStock::cut_hw(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
+  return cut_t<true>(from, to, visit, user);
+}
+SWARF_TARGET_HW bool PixelStock::gouges_hw(Vec2 centre) const {
+  return gouges_t<true>(centre);
+}
+SWARF_TARGET_HW int PixelStock::material_in_disk_hw(Vec2 centre, double radius_mm,
+                                                    int enough) const {
+  return material_in_disk_t<true>(centre, radius_mm, enough);
+}
+
+int PixelStock::probe(Vec2 from, Vec2 to, int enough) const {
+#ifdef SWARF_POCKET_DISPATCH
+  if (cpu_has_hw()) return probe_hw(from, to, enough);
+#endif
+  return probe_t<false>(from, to, enough);
+}
+int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
+#ifdef SWARF_POCKET_DISPATCH
+  if (cpu_has_hw()) return cut_hw(from, to, visit, user);
+#endif
+  return cut_t<false>(from, to, visit, user);
+}
+bool PixelStock::gouges(Vec2 centre) const {
+#ifdef SWARF_POCKET_DISPATCH
+  if (cpu_has_hw()) return gouges_hw(centre);
+#endif
+  return gouges_t<false>(centre);
+}
+int PixelStock::material_in_disk(Vec2 centre, double radius_mm, int enough) const {
+#ifdef SWARF_POCKET_DISPATCH
+  if (cpu_has_hw()) return material_in_disk_hw(centre, radius_mm, enough);
+#endif
+  return material_in_disk_t<false>(centre, radius_mm, enough);
 }
 
 int PixelStock::stamp(Vec2 centre, CutVisitor visit, void* user) {

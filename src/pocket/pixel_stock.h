@@ -40,17 +40,56 @@ class BitImage {
     return (row(j)[static_cast<std::size_t>(i) >> 6] >> (static_cast<unsigned>(i) & 63u)) & 1u;
   }
   void set(int i, int j, bool v);
-  /// Number of set bits in columns [x0, x1] of row j (x0 <= x1, both inside).
-  int count(int j, int x0, int x1) const;
+  /// Number of set bits in columns [x0, x1] of row j (x0 <= x1, both inside). Inline:
+  /// it is the inner loop of every engagement probe. kHw: use the POPCNT instruction
+  /// (only inside functions compiled for it, see pixel_stock.cpp).
+  template <bool kHw = false>
+  [[gnu::always_inline]] int count(int j, int x0, int x1) const {
+    const std::uint64_t* r = row(j);
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    const std::uint64_t lo = ~std::uint64_t{0} << static_cast<unsigned>(x0 & 63);
+    const std::uint64_t hi = ~std::uint64_t{0} >> static_cast<unsigned>(63 - (x1 & 63));
+    if (w0 == w1) return popcount<kHw>(r[w0] & lo & hi);
+    int n = popcount<kHw>(r[w0] & lo);
+    for (int w = w0 + 1; w < w1; ++w)
+      n += popcount<kHw>(r[w]);
+    return n + popcount<kHw>(r[w1] & hi);
+  }
+  /// Portable SWAR popcount by default: without -mpopcnt, std::popcount becomes a libgcc
+  /// call that cost a third of the run time; the SWAR form stays inline on every target.
+  template <bool kHw = false>
+  [[gnu::always_inline]] static int popcount(std::uint64_t x) {
+    if constexpr (kHw) {
+      return __builtin_popcountll(x);
+    } else {
+      x = x - ((x >> 1) & 0x5555555555555555ull);
+      x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+      x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
+      return static_cast<int>((x * 0x0101010101010101ull) >> 56);
+    }
+  }
   /// Clears columns [x0, x1] of row j; returns how many bits were set.
-  int clear(int j, int x0, int x1);
+  template <bool kHw = false>
+  [[gnu::always_inline]] int clear(int j, int x0, int x1) {
+    std::uint64_t* r = row(j);
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    int n = 0;
+    for (int w = w0; w <= w1; ++w) {
+      std::uint64_t m = ~std::uint64_t{0};
+      if (w == w0) m &= ~std::uint64_t{0} << static_cast<unsigned>(x0 & 63);
+      if (w == w1) m &= ~std::uint64_t{0} >> static_cast<unsigned>(63 - (x1 & 63));
+      n += popcount<kHw>(r[w] & m);
+      r[w] &= ~m;
+    }
+    return n;
+  }
   std::size_t count_all() const;
 
  private:
-  const std::uint64_t* row(int j) const {
+  [[gnu::always_inline]] const std::uint64_t* row(int j) const {
     return bits_.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(words_);
   }
-  std::uint64_t* row(int j) {
+  [[gnu::always_inline]] std::uint64_t* row(int j) {
     return bits_.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(words_);
   }
   int width_ = 0, height_ = 0, words_ = 0;
@@ -80,12 +119,17 @@ class PixelStock {
   /// Material pixels in disk(to) minus disk(from), or kGouge when that crescent holds a
   /// forbidden pixel. Assumes disk(from) is already free of material and of forbidden
   /// pixels (true at every position the tool has been moved to). Changes nothing.
-  int probe(Vec2 from, Vec2 to) const;
+  /// Counting may stop once the count passes `enough` (the result is then some value
+  /// above it): callers that only need to know "more than enough" save the rest.
+  int probe(Vec2 from, Vec2 to, int enough = kNoLimit) const;
+  static constexpr int kNoLimit = 0x7fffffff;
   /// Removes the material of disk(to) minus disk(from); returns the pixels removed.
   int cut(Vec2 from, Vec2 to, CutVisitor visit = nullptr, void* user = nullptr);
   /// Whole-disk versions for places the tool has not come from (entry, links, checks).
   bool gouges(Vec2 centre) const;
-  int material_in_disk(Vec2 centre, double radius_mm) const;
+  /// Material pixels in the disk; may stop counting once past `enough` (then returns
+  /// some value above it), e.g. 0 to ask "is there any?".
+  int material_in_disk(Vec2 centre, double radius_mm, int enough = kNoLimit) const;
   int stamp(Vec2 centre, CutVisitor visit = nullptr, void* user = nullptr);
   /// Gives up on one material pixel (the move chooser found no way to reach it).
   void drop_pixel(int i, int j) { material_.set(i, j, false); }
@@ -93,6 +137,22 @@ class PixelStock {
  private:
   template <class RowFn>
   bool crescent_rows(Vec2 from, Vec2 to, RowFn&& fn) const;
+  // The work of probe, cut, gouges and material_in_disk, written once; kHw instances run
+  // inside functions compiled for POPCNT and SSE4.1 (floor and ceil as single
+  // instructions), chosen at run time when the CPU has them: about 1.8x faster, same
+  // results bit for bit (integer counts; floor and ceil are exact either way).
+  template <bool kHw>
+  int probe_t(Vec2 from, Vec2 to, int enough) const;
+  template <bool kHw>
+  int cut_t(Vec2 from, Vec2 to, CutVisitor visit, void* user);
+  template <bool kHw>
+  bool gouges_t(Vec2 centre) const;
+  template <bool kHw>
+  int material_in_disk_t(Vec2 centre, double radius_mm, int enough) const;
+  int probe_hw(Vec2 from, Vec2 to, int enough) const;
+  int cut_hw(Vec2 from, Vec2 to, CutVisitor visit, void* user);
+  bool gouges_hw(Vec2 centre) const;
+  int material_in_disk_hw(Vec2 centre, double radius_mm, int enough) const;
   Grid grid_;
   BitImage material_;
   BitImage forbidden_;

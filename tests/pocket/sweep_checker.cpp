@@ -86,7 +86,7 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
 }  // namespace
 
 SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path, double target_deg,
-                        double h, double tol) {
+                        double h, double tol, std::vector<SweepSample>* samples_out) {
   SweepReport rep;
   Box2 box;
   for (const Ring& r : region.rings)
@@ -127,6 +127,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     const double d = edge_distance(region, s.p);
     const double gouge = inside(region, s.p) ? R - d : R + d;
     rep.max_gouge_mm = std::max(rep.max_gouge_mm, gouge);
+    double sample_eng = -1.0;
     if (!s.entry) {
       // Engagement: front half of a circle just outside the tool, 1 degree apart.
       int n = 0;
@@ -141,6 +142,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
           ++n;
       }
       const double eng = n;
+      sample_eng = eng;
       if (eng > 2.0) {
         rep.cutting_length_mm += s.ds;
         if (std::abs(eng - target_deg) <= 0.2 * target_deg) within += s.ds;
@@ -148,6 +150,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         if (eng >= 170.0) rep.slot_length_mm += s.ds;
       }
     }
+    if (samples_out != nullptr) samples_out->push_back({s.p, s.ds, sample_eng, d});
     stamp(s.p, cell, 1, 2);
   }
   if (rep.cutting_length_mm > 0) rep.within_20pct = within / rep.cutting_length_mm;

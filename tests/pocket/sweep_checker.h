@@ -4,6 +4,8 @@
 // the stamped bitmap as the arc of the tool's front half touching uncut material.
 #pragma once
 
+#include <vector>
+
 #include "swarf/polygon/polygon.h"
 #include "swarf/toolpath/toolpath.h"
 
@@ -19,11 +21,20 @@ struct SweepReport {
   double slot_length_mm = 0.0;      ///< length engaged >= 170 deg (a full slot), outside entry
 };
 
+/// One floor-pass sample of the sweep, for diagnosis (where the engagement leaves its band).
+struct SweepSample {
+  Vec2 position;
+  double length_mm = 0.0;         ///< path length this sample stands for
+  double engagement_deg = 0.0;    ///< -1 for entry samples (helix, ramp)
+  double wall_distance_mm = 0.0;  ///< from the tool centre to the nearest wall or island
+};
+
 /// region: outer ring then islands. The floor pass is the moves at the lowest z of the
 /// program; helix, ramp and plunge moves and the arcs at the bottom of a helix are the
 /// entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a wall is
 /// not counted as residual.
 SweepReport sweep_check(const PolygonSet& region, double tool_radius_mm, const Toolpath& path,
-                        double target_engagement_deg, double pixel_mm, double residual_tol_mm);
+                        double target_engagement_deg, double pixel_mm, double residual_tol_mm,
+                        std::vector<SweepSample>* samples = nullptr);
 
 }  // namespace swarf::testing
