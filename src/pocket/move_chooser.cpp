@@ -49,9 +49,10 @@ class Chooser {
     k.p = pos_ + d * step_;
     int& memo = memo_[theta + 180];
     if (memo == kUnprobed) {
-      // Beyond twice the target a candidate is never chosen and only compares as "more
-      // than the target" (best_delta <= target), so its exact count is not needed.
-      memo = stock_.probe(pos_, k.p, static_cast<int>(2.0 * m_.target_px) + 1);
+      // The tool's disk at pos_ is free (it has been there), so the crescent's count is
+      // the whole disk's. Beyond twice the target a candidate is never chosen and only
+      // compares as "more than the target" (best_delta <= target): no exact count needed.
+      memo = stock_.probe_disk(k.p, static_cast<int>(2.0 * m_.target_px) + 1);
       // A long (non-cutting) step also checks its inner points: a chord between two free
       // centres can clip a convex corner of an island.
       for (double u = m_.step_mm; memo >= 0 && u < step_ - 1e-9; u += m_.step_mm)

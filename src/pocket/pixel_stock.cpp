@@ -178,9 +178,7 @@ template <bool kHw>
                                                     void* user) {
   int n = 0;
   crescent_rows(from, to, [&](int j, int x0, int x1) SWARF_INLINE {
-    if (visit != nullptr)
-      for (int i = x0; i <= x1; ++i)
-        if (material_.get(i, j)) visit(user, i, j);
+    if (visit != nullptr) material_.for_each_set(j, x0, x1, [&](int i) { visit(user, i, j); });
     n += material_.clear<kHw>(j, x0, x1);
     return true;
   });
@@ -253,6 +251,9 @@ int PixelStock::probe(Vec2 from, Vec2 to, int enough) const {
   if (cpu_has_hw()) return probe_hw(from, to, enough);
 #endif
   return probe_t<false>(from, to, enough);
+}
+int PixelStock::probe_disk(Vec2 to, int enough) const {
+  return probe(far_away(to, tool_radius_mm()), to, enough);
 }
 int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
 #ifdef SWARF_POCKET_DISPATCH

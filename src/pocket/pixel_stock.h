@@ -40,6 +40,18 @@ class BitImage {
     return (row(j)[static_cast<std::size_t>(i) >> 6] >> (static_cast<unsigned>(i) & 63u)) & 1u;
   }
   void set(int i, int j, bool v);
+  /// Calls fn(i) for each set bit i in columns [x0, x1] of row j, in increasing i.
+  template <class Fn>
+  void for_each_set(int j, int x0, int x1, Fn&& fn) const {
+    const std::uint64_t* r = row(j);
+    for (int w = x0 >> 6; w <= (x1 >> 6); ++w) {
+      std::uint64_t m = r[w];
+      if (w == (x0 >> 6)) m &= ~std::uint64_t{0} << static_cast<unsigned>(x0 & 63);
+      if (w == (x1 >> 6)) m &= ~std::uint64_t{0} >> static_cast<unsigned>(63 - (x1 & 63));
+      for (; m != 0; m &= m - 1)
+        fn(w * 64 + __builtin_ctzll(m));
+    }
+  }
   /// Number of set bits in columns [x0, x1] of row j (x0 <= x1, both inside). Inline:
   /// it is the inner loop of every engagement probe. kHw: use the POPCNT instruction
   /// (only inside functions compiled for it, see pixel_stock.cpp).
@@ -123,6 +135,10 @@ class PixelStock {
   /// above it): callers that only need to know "more than enough" save the rest.
   int probe(Vec2 from, Vec2 to, int enough = kNoLimit) const;
   static constexpr int kNoLimit = 0x7fffffff;
+  /// probe(from, to) for a `from` whose disk holds no material and no forbidden pixel
+  /// (every position the tool has been moved to): then the crescent's count is the whole
+  /// disk's, one row interval each instead of the difference of two. Same result.
+  int probe_disk(Vec2 to, int enough = kNoLimit) const;
   /// Removes the material of disk(to) minus disk(from); returns the pixels removed.
   int cut(Vec2 from, Vec2 to, CutVisitor visit = nullptr, void* user = nullptr);
   /// Whole-disk versions for places the tool has not come from (entry, links, checks).
