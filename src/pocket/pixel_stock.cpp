@@ -1,6 +1,7 @@
 #include "pocket/pixel_stock.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace swarf::pocket {
@@ -32,9 +33,10 @@ namespace {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SWARF_POCKET_DISPATCH 1
 #define SWARF_TARGET_HW __attribute__((target("popcnt,sse4.1")))
+std::atomic<bool> g_allow_hw{true};
 bool cpu_has_hw() {
   static const bool has = __builtin_cpu_supports("popcnt") && __builtin_cpu_supports("sse4.1");
-  return has;
+  return has && g_allow_hw.load(std::memory_order_relaxed);
 }
 #else
 #define SWARF_TARGET_HW
@@ -252,6 +254,14 @@ int PixelStock::probe(Vec2 from, Vec2 to, int enough) const {
 #endif
   return probe_t<false>(from, to, enough);
 }
+void PixelStock::allow_cpu_features(bool allow) {
+#ifdef SWARF_POCKET_DISPATCH
+  g_allow_hw.store(allow, std::memory_order_relaxed);
+#else
+  (void)allow;
+#endif
+}
+
 int PixelStock::probe_disk(Vec2 to, int enough) const {
   return probe(far_away(to, tool_radius_mm()), to, enough);
 }

@@ -141,6 +141,9 @@ class PixelStock {
   int probe_disk(Vec2 to, int enough = kNoLimit) const;
   /// Removes the material of disk(to) minus disk(from); returns the pixels removed.
   int cut(Vec2 from, Vec2 to, CutVisitor visit = nullptr, void* user = nullptr);
+  /// Lets tests run the portable code on a CPU that has POPCNT and SSE4.1 (results must
+  /// not depend on it). Not thread-safe against running stocks; default true.
+  static void allow_cpu_features(bool allow);
   /// Whole-disk versions for places the tool has not come from (entry, links, checks).
   bool gouges(Vec2 centre) const;
   /// Material pixels in the disk; may stop counting once past `enough` (then returns
