@@ -54,6 +54,7 @@ void quality(benchmark::State& state, const Pocket& p, const Toolpath& tp, doubl
   state.counters["gouge_mm"] = s.max_gouge_mm;
   state.counters["residual_mm2"] = s.residual_mm2;
   state.counters["within20_pct"] = 100.0 * s.within_20pct;
+  state.counters["within20_rm_pct"] = 100.0 * s.within_20pct_removal;
   state.counters["max_eng_deg"] = s.max_engagement_deg;
   state.counters["slot_mm"] = s.slot_length_mm;
 }

@@ -82,9 +82,10 @@ Outcome run(const Pocket& p, double tool_d, double stepover_mm) {
   const auto& s = o.sweep;
   std::printf(
       "  %s: gouge %.3f mm, residual %.2f mm2 (unreachable %.1f), cutting %.0f mm, "
-      "within20 %.1f %%, max eng %.0f deg, slot %.1f mm, pixel %.3f mm\n",
+      "within20 %.1f %% (by removal %.1f %%), max eng %.0f deg, slot %.1f mm, pixel %.3f mm\n",
       p.source.c_str(), s.max_gouge_mm, s.residual_mm2, s.unreachable_mm2, s.cutting_length_mm,
-      100 * s.within_20pct, s.max_engagement_deg, s.slot_length_mm, o.result.resolution_mm);
+      100 * s.within_20pct, 100 * s.within_20pct_removal, s.max_engagement_deg, s.slot_length_mm,
+      o.result.resolution_mm);
   return o;
 }
 

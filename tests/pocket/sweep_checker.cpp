@@ -86,7 +86,8 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
 }  // namespace
 
 SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path, double target_deg,
-                        double h, double tol, std::vector<SweepSample>* samples_out) {
+                        double h, double tol, std::vector<SweepSample>* samples_out,
+                        double removal_window_mm) {
   SweepReport rep;
   Box2 box;
   for (const Ring& r : region.rings)
@@ -107,7 +108,9 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         wall_d[static_cast<std::size_t>(j) * w + i] = static_cast<float>(edge_distance(region, p));
       }
     }
-  auto stamp = [&](Vec2 c, std::vector<unsigned char>& img, unsigned char from, unsigned char to) {
+  auto stamp = [&](Vec2 c, std::vector<unsigned char>& img, unsigned char from,
+                   unsigned char to) -> int {
+    int changed = 0;
     const int j0 = std::max(0, static_cast<int>(std::ceil((c.y - R - box.min.y) / h)));
     const int j1 = std::min(ht - 1, static_cast<int>(std::floor((c.y + R - box.min.y) / h)));
     for (int j = j0; j <= j1; ++j) {
@@ -117,12 +120,31 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
       const int i1 = std::min(w - 1, static_cast<int>(std::floor((c.x + half - box.min.x) / h)));
       for (int i = i0; i <= i1; ++i) {
         unsigned char& v = img[static_cast<std::size_t>(j) * w + i];
-        if (v == from) v = to;
+        if (v == from) {
+          v = to;
+          ++changed;
+        }
       }
     }
+    return changed;
   };
   const std::vector<Sample> samples = floor_samples(path, 0.5 * h);
   double within = 0.0;
+  // Removal measure (seed 000's definition: the material a move removes): area removed
+  // over a window of path, as the stepover of a straight cut, as an angle.
+  double win_len = 0.0, win_area = 0.0, within_removal = 0.0;
+  Vec2 last{1e300, 1e300};
+  auto flush = [&] {
+    if (win_len <= 0.0) return;
+    const double stepover = win_area / win_len;
+    const double eng = rad_to_deg(std::acos(std::clamp(1.0 - stepover / R, -1.0, 1.0)));
+    if (eng > 2.0) {
+      rep.removal_cutting_length_mm += win_len;
+      if (std::abs(eng - target_deg) <= 0.2 * target_deg) within_removal += win_len;
+    }
+    win_len = 0.0;
+    win_area = 0.0;
+  };
   for (const Sample& s : samples) {
     const double d = edge_distance(region, s.p);
     const double gouge = inside(region, s.p) ? R - d : R + d;
@@ -151,9 +173,19 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
       }
     }
     if (samples_out != nullptr) samples_out->push_back({s.p, s.ds, sample_eng, d});
-    stamp(s.p, cell, 1, 2);
+    if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
+    last = s.p;
+    const int removed = stamp(s.p, cell, 1, 2);
+    if (!s.entry) {
+      win_len += s.ds;
+      win_area += removed * h * h;
+      if (win_len >= removal_window_mm) flush();
+    }
   }
+  flush();
   if (rep.cutting_length_mm > 0) rep.within_20pct = within / rep.cutting_length_mm;
+  if (rep.removal_cutting_length_mm > 0)
+    rep.within_20pct_removal = within_removal / rep.removal_cutting_length_mm;
   // Opening of the pocket by the disk: union of disks at centres >= R from every wall.
   std::vector<unsigned char> reach(cell.size(), 0);
   for (int j = 0; j < ht; ++j)

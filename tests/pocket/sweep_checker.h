@@ -19,6 +19,13 @@ struct SweepReport {
   double within_20pct = 0.0;        ///< fraction of it within +-20 % of the target angle
   double max_engagement_deg = 0.0;  ///< outside the entry
   double slot_length_mm = 0.0;      ///< length engaged >= 170 deg (a full slot), outside entry
+  /// The same figure by removal (seed 000's definition of engagement): the area the swept
+  /// disk removes over each window of path, as the stepover of a straight cut of that
+  /// width, as an angle. Unlike the arc, it does not see material the tool never removes
+  /// (the skin of half a generator pixel left on the walls lies just outside the arc's
+  /// circle of R + pixel/2, so every pass along a wall reads a few degrees there).
+  double removal_cutting_length_mm = 0.0;
+  double within_20pct_removal = 0.0;
 };
 
 /// One floor-pass sample of the sweep, for diagnosis (where the engagement leaves its band).
@@ -35,6 +42,7 @@ struct SweepSample {
 /// not counted as residual.
 SweepReport sweep_check(const PolygonSet& region, double tool_radius_mm, const Toolpath& path,
                         double target_engagement_deg, double pixel_mm, double residual_tol_mm,
-                        std::vector<SweepSample>* samples = nullptr);
+                        std::vector<SweepSample>* samples = nullptr,
+                        double removal_window_mm = 0.5);
 
 }  // namespace swarf::testing
