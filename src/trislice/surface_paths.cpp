@@ -103,6 +103,102 @@ Toolpath new_toolpath(const Tool& tool, std::string name, double clearance) {
   return tp;
 }
 
+
+// Stride of the first adaptive pass: the largest power of two k with k * sampling <= max step.
+std::size_t coarse_stride(const ScanParams& p) {
+  std::size_t k = 1;
+  while (2.0 * static_cast<double>(k) * p.sampling_mm <= p.adaptive_max_step_mm + 1e-9 && k < 1024)
+    k *= 2;
+  return k;
+}
+
+// Adaptive refinement of one line between lattice indices a and b (a < b), whose points pa,
+// pb are known: the midpoint is evaluated and kept; the two halves are refined further only
+// while it leaves the chord by more than tol. Appends the points after a up to b, in order.
+// Why the midpoint says enough: along a line, the ball centre is the upper envelope of
+// circular arcs (one per contact point of the part, radius sqrt(R^2 - d^2), d its distance
+// across the line), each concave. Over a stretch held by one arc, the gap between arc and
+// chord is largest at the midpoint and a quarter of it over each half, so a midpoint within
+// tol bounds the whole stretch. The envelope lies above the chord only where a contact
+// takes over between the samples; such a takeover wider than the stretch moves the
+// midpoint, and one narrower is a feature the uniform grid (at the same lattice) misses too
+// unless it sits on one of its points (measured in TriSlicePaths.AdaptiveScan*).
+template <class Eval>
+void refine(std::size_t a, const Vec3& pa, std::size_t b, const Vec3& pb, double tol,
+            const Eval& eval, std::vector<Vec3>& out) {
+  if (b - a <= 1) {
+    out.push_back(pb);
+    return;
+  }
+  const std::size_t m = a + (b - a) / 2;
+  const Vec3 pm = eval(m);
+  const Vec2 ab = pb.xy() - pa.xy();
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? dot(pm.xy() - pa.xy(), ab) / len2 : 0.5;
+  const double chord = pa.z + t * (pb.z - pa.z);
+  if (std::fabs(pm.z - chord) > tol) {
+    refine(a, pa, m, pm, tol, eval, out);
+    refine(m, pm, b, pb, tol, eval, out);
+  } else {
+    out.push_back(pm);
+    out.push_back(pb);
+  }
+}
+
+// CL lines (tool tips) at offset extra above the part, tips clipped to clip_z (roughing layers
+// above the stock) before the adaptive test, so the chord test sees the path that is cut.
+Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Box3& bounds,
+                                                double tool_radius_mm, double extra_mm,
+                                                const ScanParams& p, double clip_z, double tol,
+                                                const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(validate(p));
+  if (!(tool_radius_mm > 0.0)) return bad_parameter("tool radius must be positive");
+  const Box2 region = p.region.empty() ? bounds.xy() : p.region;
+  if (region.empty()) return bad_parameter("scan: empty region");
+  const bool along_x = p.direction == Axis::kX;
+  const std::vector<double> across = along_x ? positions(region.min.y, region.max.y, p.stepover_mm)
+                                             : positions(region.min.x, region.max.x, p.stepover_mm);
+  const std::vector<double> along = along_x ? positions(region.min.x, region.max.x, p.sampling_mm)
+                                            : positions(region.min.y, region.max.y, p.sampling_mm);
+  if (static_cast<double>(across.size()) * static_cast<double>(along.size()) > 2e8)
+    return bad_parameter("scan: more than 200 million CL points");
+  const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : bounds.min.z;
+  const double R = tool_radius_mm + extra_mm;
+  // The family whose planes contain the scan lines is asked first: Eq. (1) exactly there.
+  const Axis primary = along_x ? Axis::kY : Axis::kX;
+  const std::size_t stride = p.adaptive ? coarse_stride(p) : 1;
+  std::vector<std::vector<Vec3>> lines(across.size());
+  parallel_for(across.size(), ctx.threads, [&](std::size_t i) {
+    if (ctx.cancelled()) return;
+    ScanHint hint;
+    auto eval = [&](std::size_t k) {
+      const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
+      const double c = top.centre_height(xy, R, primary, &hint);
+      const double z = c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z;
+      return Vec3{xy.x, xy.y, std::min(z, clip_z)};
+    };
+    std::vector<Vec3>& line = lines[i];
+    if (along.empty()) return;
+    if (stride <= 1) {
+      line.reserve(along.size());
+      for (std::size_t k = 0; k < along.size(); ++k)
+        line.push_back(eval(k));
+      return;
+    }
+    Vec3 pa = eval(0);
+    line.push_back(pa);
+    for (std::size_t a = 0; a + 1 < along.size();) {
+      const std::size_t b = std::min(a + stride, along.size() - 1);
+      const Vec3 pb = eval(b);
+      refine(a, pa, b, pb, tol, eval, line);
+      a = b;
+      pa = pb;
+    }
+  });
+  if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
+  return lines;
+}
+
 }  // namespace
 
 Status validate(const ScanParams& p) {
@@ -113,6 +209,10 @@ Status validate(const ScanParams& p) {
     return bad_parameter("sampling " + std::to_string(p.sampling_mm) + " mm must be positive");
   if (!(p.stock_to_leave_mm >= 0.0)) return bad_parameter("stock to leave must be >= 0 mm");
   if (!(p.tolerance_mm >= 0.0)) return bad_parameter("tolerance must be >= 0 mm");
+  if (!(p.adaptive_tolerance_mm >= 0.0))
+    return bad_parameter("adaptive tolerance must be >= 0 mm");
+  if (!(p.adaptive_max_step_mm > 0.0))
+    return bad_parameter("adaptive max step must be positive");
   if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0))
     return bad_parameter("feeds must be positive");
   return {};
@@ -125,6 +225,8 @@ Status validate(const RoughingParams& p) {
   if (!(p.margin_mm >= 0.0)) return bad_parameter("roughing margin must be >= 0 mm");
   if (!(p.min_pitch_mm >= 0.0)) return bad_parameter("roughing min pitch must be >= 0 mm");
   if (!(p.sampling_mm >= 0.0)) return bad_parameter("roughing sampling must be >= 0 mm");
+  if (!(p.adaptive_tolerance_mm >= 0.0))
+    return bad_parameter("roughing adaptive tolerance must be >= 0 mm");
   return {};
 }
 
@@ -142,35 +244,7 @@ Status validate(const ContourParams& p) {
 Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
                                                      double tool_radius_mm, double extra_mm,
                                                      const ScanParams& p, const Context& ctx) {
-  SWARF_RETURN_IF_ERROR(validate(p));
-  if (!(tool_radius_mm > 0.0)) return bad_parameter("tool radius must be positive");
-  const Box2 region = p.region.empty() ? bounds.xy() : p.region;
-  if (region.empty()) return bad_parameter("scan: empty region");
-  const bool along_x = p.direction == Axis::kX;
-  const std::vector<double> across = along_x ? positions(region.min.y, region.max.y, p.stepover_mm)
-                                             : positions(region.min.x, region.max.x, p.stepover_mm);
-  const std::vector<double> along = along_x ? positions(region.min.x, region.max.x, p.sampling_mm)
-                                            : positions(region.min.y, region.max.y, p.sampling_mm);
-  if (static_cast<double>(across.size()) * static_cast<double>(along.size()) > 2e8)
-    return bad_parameter("scan: more than 200 million CL points");
-  const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : bounds.min.z;
-  const double R = tool_radius_mm + extra_mm;
-  // The family whose planes contain the scan lines is asked first: Eq. (1) exactly there.
-  const Axis primary = along_x ? Axis::kY : Axis::kX;
-  std::vector<std::vector<Vec3>> lines(across.size());
-  parallel_for(across.size(), ctx.threads, [&](std::size_t i) {
-    if (ctx.cancelled()) return;
-    ScanHint hint;
-    std::vector<Vec3>& line = lines[i];
-    line.reserve(along.size());
-    for (double s : along) {
-      const Vec2 xy = along_x ? Vec2{s, across[i]} : Vec2{across[i], s};
-      const double c = top.centre_height(xy, R, primary, &hint);
-      line.push_back({xy.x, xy.y, c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z});
-    }
-  });
-  if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
-  return lines;
+  return cl_lines(top, bounds, tool_radius_mm, extra_mm, p, kInf, p.adaptive_tolerance_mm, ctx);
 }
 
 Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& top,
@@ -222,7 +296,8 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
   // Table 1: successive inflations, the deepest layer last.
   for (int k = rough.layers - 1; k >= 0; --k) {
     const double extra = rough.margin_mm + k * rough.stepdown_mm;
-    auto lines = scan_cl_lines(use, model.bounds, tool.radius(), extra, p, ctx);
+    auto lines = cl_lines(use, model.bounds, tool.radius(), extra, p, stock_top,
+                          rough.adaptive_tolerance_mm, ctx);
     if (!lines.ok()) return lines.status();
     const double R = tool.radius() + extra;
     auto cl_at = [&](Vec2 xy) {

@@ -40,7 +40,7 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   ASSERT_TRUE(write_stl(dir.file("dome.stl"), make_sphere({0, 0, 0}, 8.0, 96)).ok());
   const auto a =
       run_swarf("surface " + dir.file("dome.stl") +
-                " --tool ball:6 --pattern scan --stepover 1 --sampling 0.25 --pitch "
+                " --tool ball:6 --pattern scan --uniform --stepover 1 --sampling 0.25 --pitch "
                 "0.1 -o " +
                 dir.file("s.nc") + " --csv " + dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
