@@ -163,7 +163,12 @@ void BM_TriSliceScanProgram(benchmark::State& state) {
     state.counters["cpu_s"] = cpu() - c0;
   }
 }
-BENCHMARK(BM_TriSliceScanProgram)->Arg(0)->Arg(1)->Iterations(3)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_TriSliceScanProgram)
+    ->Arg(0)
+    ->Arg(1)
+    ->Iterations(3)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 // The exact drop-cutter on the same grid (index build included).
 void BM_DropCutterScanProgram(benchmark::State& state) {

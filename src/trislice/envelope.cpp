@@ -56,13 +56,14 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         Seg s{};
         if (family.axis == Axis::kX) {  // (u, v) = (y, z)
           nz = -du;
-          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0};
+          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0, 0.0};
         } else {  // kY: (u, v) = (z, x)
           nz = dv;
-          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0};
+          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0, 0.0};
         }
         if (nz < -1e-12 * std::hypot(du, dv)) continue;
-        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0};
+        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0, 0};
+        s.top = std::max(s.z0, s.z1);
         // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
         const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
         if (ds_ > 1e-12 && len > 0.0) {
@@ -83,35 +84,35 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   e.smin_ = smin;
   e.nb_ = static_cast<int>(std::floor((smax - smin) / e.bin_)) + 1;
   const std::size_t nb = static_cast<std::size_t>(e.nb_);
-  std::size_t total = 0;
+  e.nseg_ = 0;
   for (const auto& v : per)
-    total += v.size();
-  e.seg_.reserve(total);
+    e.nseg_ += v.size();
   e.start_.assign(e.n_ * nb + 1, 0);
   e.binmax_.assign(e.n_ * nb, -kInf);
   auto bin_of = [&](double s) {
     return std::clamp(static_cast<int>(std::floor((s - e.smin_) / e.bin_)), 0, e.nb_ - 1);
   };
-  // Count, then fill (CSR).
+  // Count, then fill (CSR). A segment is copied into every bin it spans, so a query reads
+  // the segments of a bin, and of consecutive bins of a slice, from one run of memory.
   for (std::size_t j = 0; j < e.n_; ++j)
     for (const Seg& s : per[j])
       for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
         ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
   for (std::size_t c = 0; c < e.n_ * nb; ++c)
     e.start_[c + 1] += e.start_[c];
-  e.items_.resize(e.start_.back());
+  e.seg_.resize(e.start_.back());
+  e.slice_of_.resize(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
     for (const Seg& s : per[j]) {
-      const auto id = static_cast<std::uint32_t>(e.seg_.size());
-      e.seg_.push_back(s);
-      e.slice_of_.push_back(static_cast<std::uint32_t>(j));
       for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
-        e.items_[fill[c]++] = id;
-        e.binmax_[c] = std::max(e.binmax_[c], std::max(s.z0, s.z1));
+        e.seg_[fill[c]] = s;
+        e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
+        e.binmax_[c] = std::max(e.binmax_[c], s.top);
       }
     }
+    std::vector<Seg>().swap(per[j]);
   }
   // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
   // kBlock^2 slices: a query rejects far slices wholesale with few checks.
@@ -134,7 +135,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
 
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
-         (start_.size() + items_.size()) * sizeof(std::uint32_t) +
+         start_.size() * sizeof(std::uint32_t) +
          (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double);
 }
 
@@ -247,8 +248,17 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
         const int b = pass[m];
         const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
         if (!can_beat(b, binmax_[cell], rho2)) continue;
-        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
-          drop(items_[k], rho, rho2);
+        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+          // The segment's box first: no point of it rises above top, nor lies nearer than dx
+          // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
+          const Seg& g = seg_[k];
+          const double need = best - g.top;
+          if (need >= 0.0) {
+            const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
+            if (rho2 - dx * dx <= need * need) continue;
+          }
+          drop(k, rho, rho2);
+        }
       }
     }
   };
@@ -319,21 +329,27 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
     cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
   for (std::size_t c = 0; c < ncell; ++c)
     e.start_[c + 1] += e.start_[c];
-  e.items_.resize(e.start_.back());
+  std::vector<std::uint32_t> items(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t k = 0; k < e.seg_.size(); ++k)
-    cells(e.seg_[k], [&](std::size_t c) { e.items_[fill[c]++] = static_cast<std::uint32_t>(k); });
+    cells(e.seg_[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
   // Highest level first in every cell (ties by index: deterministic).
   for (std::size_t c = 0; c < ncell; ++c)
-    std::sort(e.items_.begin() + e.start_[c], e.items_.begin() + e.start_[c + 1],
+    std::sort(items.begin() + e.start_[c], items.begin() + e.start_[c + 1],
               [&](std::uint32_t a, std::uint32_t b) {
                 return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
               });
+  // The segments themselves in that order, so a query reads a cell from one run of memory.
+  std::vector<Seg> inl(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k)
+    inl[k] = e.seg_[items[k]];
+  e.nseg_ = e.seg_.size();
+  e.seg_ = std::move(inl);
   return e;
 }
 
 std::size_t LevelEnvelope::memory_bytes() const {
-  return seg_.size() * sizeof(Seg) + (start_.size() + items_.size()) * sizeof(std::uint32_t);
+  return seg_.size() * sizeof(Seg) + start_.size() * sizeof(std::uint32_t);
 }
 
 double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
@@ -354,7 +370,7 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
       const std::size_t c =
           static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
       for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-        const Seg& g = seg_[items_[k]];
+        const Seg& g = seg_[k];
         const double need = best - g.z;
         if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
         const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "swarf/dropcut/dropcut.h"
 #include "swarf/mesh/generate.h"
@@ -267,10 +268,9 @@ namespace swarf {
 namespace {
 
 // Adaptive sampling along the scan lines against the uniform grid on the Table 2 part: the
-// adaptive path, linearly interpolated, is never below a uniform CL point by more than the
-// tolerance (a gouge), and it lies above one (material left, where two contacts meet in a
-// valley between the adaptive samples) by a few micrometres at most; from about half the
-// queries (one per kept point: the ring's curved flanks need the 0.1 mm spacing for 1 um).
+// adaptive path, linearly interpolated, is neither below a uniform CL point by more than the
+// tolerance (a gouge) nor above it (material left), from fewer queries (one per kept point;
+// the ring's curved flanks need the 0.1 mm spacing for 1 um, the plate does not).
 TEST(TriSlicePaths, AdaptiveScanStaysWithinToleranceOfTheUniformGrid) {
   auto model = build_trislice(make_filleted_torus_part(), 0.125);
   ASSERT_TRUE(model.ok());
@@ -307,8 +307,10 @@ TEST(TriSlicePaths, AdaptiveScanStaysWithinToleranceOfTheUniformGrid) {
     }
   }
   EXPECT_LE(below, p.adaptive_tolerance_mm + 1e-9);
-  EXPECT_LE(above, 0.01);
-  EXPECT_LT(static_cast<double>(na), 0.6 * static_cast<double>(nu)) << na << " of " << nu;
+  EXPECT_LE(above, p.adaptive_tolerance_mm + 1e-9);
+  EXPECT_LT(static_cast<double>(na), 0.8 * static_cast<double>(nu)) << na << " of " << nu;
+  std::printf("adaptive: %zu of %zu queries, at most %.2f um below, %.2f um above\n", na, nu,
+              below * 1e3, above * 1e3);
 }
 
 }  // namespace

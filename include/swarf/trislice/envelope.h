@@ -42,27 +42,28 @@ class SliceEnvelope {
   double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
   static constexpr std::uint32_t kNoHint = 0xffffffffu;
 
-  std::size_t segment_count() const { return seg_.size(); }
+  std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
  private:
   struct Seg {
     double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
     double ns, nz, slope;   ///< upward unit normal; dz/ds (nz == 0 marks a vertical edge)
+    double top;             ///< max(z0, z1): a cheap bound before the exact drop
   };
   Axis axis_ = Axis::kY;
   double first_ = 0.0, pitch_ = 1.0;
   std::size_t n_ = 0;  ///< slices
   double smin_ = 0.0, bin_ = 1.0;
   int nb_ = 0;
-  std::vector<Seg> seg_;
-  std::vector<std::uint32_t> slice_of_;  ///< slice index of each segment
+  std::size_t nseg_ = 0;                 ///< upward edges (each copied into the bins it spans)
+  std::vector<Seg> seg_;                 ///< CSR items over (slice, bin), in place
+  std::vector<std::uint32_t> slice_of_;  ///< slice index of each item
   std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
-  std::vector<std::uint32_t> items_;
-  std::vector<double> binmax_;    ///< per (slice, bin)
-  int nbc_ = 0;                   ///< coarse bins
-  std::vector<double> blockmax_;  ///< per (block of kBlock slices, coarse bin)
-  std::vector<double> supermax_;  ///< per (super-block of kBlock^2 slices, coarse bin)
+  std::vector<double> binmax_;           ///< per (slice, bin)
+  int nbc_ = 0;                          ///< coarse bins
+  std::vector<double> blockmax_;         ///< per (block of kBlock slices, coarse bin)
+  std::vector<double> supermax_;         ///< per (super-block of kBlock^2 slices, coarse bin)
   static constexpr std::size_t kBlock = 16;
   static constexpr std::size_t kCoarse = 2;  ///< fine bins per coarse bin
 };
@@ -79,18 +80,19 @@ class LevelEnvelope {
  public:
   static LevelEnvelope build(const SliceFamily& xy_family, double cell_mm = 1.0, int stride = 1);
   double centre_height(Vec2 p, double r_mm, double at_least) const;
-  std::size_t segment_count() const { return seg_.size(); }
+  std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
  private:
   struct Seg {
     double x0, y0, x1, y1, z;
   };
-  std::vector<Seg> seg_;
+  std::size_t nseg_ = 0;
+  std::vector<Seg> seg_;  ///< CSR items over the cells, in place, highest level first
   Vec2 origin_;
   double cell_ = 1.0;
   int nx_ = 0, ny_ = 0;
-  std::vector<std::uint32_t> start_, items_;
+  std::vector<std::uint32_t> start_;
 };
 
 /// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
