@@ -114,6 +114,32 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
     }
     std::vector<Seg>().swap(per[j]);
   }
+  // Upper lines per (slice, bin): the slope of the highest edges across the bin, raised until
+  // every edge end inside the bin (clipped to it) lies under the line. Edges are straight, so
+  // their ends bound them.
+  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0});
+  for (std::size_t c = 0; c < e.n_ * nb; ++c) {
+    if (e.start_[c] == e.start_[c + 1]) continue;
+    const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
+    const double mid = lo + 0.5 * e.bin_;
+    double zl = -kInf, zh = -kInf;
+    auto clip = [&](const Seg& g, double at) { return g.z0 + (at - g.s0) * g.slope; };
+    for (std::uint32_t k = e.start_[c]; k < e.start_[c + 1]; ++k) {
+      const Seg& g = e.seg_[k];
+      if (g.nz > 0.0 && g.s0 <= lo && g.s1 >= lo) zl = std::max(zl, clip(g, lo));
+      if (g.nz > 0.0 && g.s0 <= hi && g.s1 >= hi) zh = std::max(zh, clip(g, hi));
+    }
+    const double b = zl > -kInf && zh > -kInf ? (zh - zl) / e.bin_ : 0.0;
+    double a = -kInf;
+    for (std::uint32_t k = e.start_[c]; k < e.start_[c + 1]; ++k) {
+      const Seg& g = e.seg_[k];
+      const double s0 = std::max(g.s0, lo), s1 = std::min(g.s1, hi);
+      const double z0 = g.nz > 0.0 && g.s0 < lo ? clip(g, lo) : g.z0;
+      const double z1 = g.nz > 0.0 && g.s1 > hi ? clip(g, hi) : g.z1;
+      a = std::max({a, z0 - b * (s0 - mid), z1 - b * (s1 - mid)});
+    }
+    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b)};
+  }
   // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
   // kBlock^2 slices: a query rejects far slices wholesale with few checks.
   e.nbc_ = (e.nb_ + kCoarse - 1) / kCoarse;
@@ -130,13 +156,35 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
       sm = std::max(sm, v);
     }
+  // Block lines per (block, bin): one slope for the block (that of its highest line ends),
+  // raised over every slice's line: a_j + b_j t <= a + b t + |b_j - b| w / 2 on the bin.
+  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0});
+  for (std::size_t blk = 0; blk < nblock; ++blk)
+    for (std::size_t b = 0; b < nb; ++b) {
+      double zl = -kInf, zh = -kInf;
+      const std::size_t j1 = std::min(e.n_, (blk + 1) * kBlock);
+      for (std::size_t j = blk * kBlock; j < j1; ++j) {
+        const Line& L = e.line_[j * nb + b];
+        zl = std::max(zl, L.a - 0.5 * e.bin_ * L.b);
+        zh = std::max(zh, L.a + 0.5 * e.bin_ * L.b);
+      }
+      if (!(zl > -kInf)) continue;
+      const double slope = (zh - zl) / e.bin_;
+      double a = -kInf;
+      for (std::size_t j = blk * kBlock; j < j1; ++j) {
+        const Line& L = e.line_[j * nb + b];
+        if (L.a > -kInf) a = std::max(a, L.a + std::fabs(L.b - slope) * 0.5 * e.bin_);
+      }
+      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope)};
+    }
   return e;
 }
 
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
          start_.size() * sizeof(std::uint32_t) +
-         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double);
+         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double) +
+         (line_.size() + blockline_.size()) * sizeof(Line);
 }
 
 double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
@@ -203,6 +251,15 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double need = best - top;
     return need < 0.0 || room > need * need;
   };
+  // The disc over a bin's upper line: its top is highest where the circle's slope matches the
+  // line's, s' = s + k rho, clamped to the part of the bin the disc reaches.
+  auto line_can_beat = [&](const Line& L, int b, double rho, double rho2) {
+    const double lo = smin_ + bin_ * b;
+    const double a0 = std::max(lo, s - rho), a1 = std::min(lo + bin_, s + rho);
+    if (a0 > a1) return false;
+    const double sp = std::clamp(s + L.k * rho, a0, a1), d = s - sp;
+    return L.a + L.b * (sp - lo - 0.5 * bin_) + std::sqrt(std::max(0.0, rho2 - d * d)) > best;
+  };
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
     const double l0 = level(j0), l1 = level(j1);
@@ -226,7 +283,8 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     int pass[4096];
     int npass = 0;
     int b0 = 0, b1 = -1;
-    bins(std::sqrt(rm2), b0, b1);
+    const double rm = std::sqrt(rm2);
+    bins(rm, b0, b1);
     for (int cb = c0; cb <= c1; ++cb) {
       if (!coarse_can_beat(
               cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
@@ -236,7 +294,10 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
            b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
            npass < 4096;
            ++b)
-        pass[npass++] = b;
+        if (line_can_beat(
+                blockline_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)], b, rm,
+                rm2))
+          pass[npass++] = b;
     }
     if (npass == 0) return;
     for (long j = j0; j <= j1; ++j) {
@@ -247,7 +308,8 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
       for (int m = 0; m < npass; ++m) {
         const int b = pass[m];
         const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
-        if (!can_beat(b, binmax_[cell], rho2)) continue;
+        if (!can_beat(b, binmax_[cell], rho2) || !line_can_beat(line_[cell], b, rho, rho2))
+          continue;
         for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
           // The segment's box first: no point of it rises above top, nor lies nearer than dx
           // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
