@@ -88,7 +88,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   sp.feed_mm_min = feed;
   sp.plunge_feed_mm_min = plunge;
   const auto t1 = std::chrono::steady_clock::now();
-  const TriSliceTop top = TriSliceTop::build(*model);
+  const TriSliceTop top = TriSliceTop::build(*model, 0.5, 1, ctx.threads);
   const int layers = p["rough_layers"].get<int>();
   if (layers > 0) {
     RoughingParams rp;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "swarf/core/parallel.h"
+
 namespace swarf {
 #ifdef SWARF_ENV_COUNT
 std::atomic<long> g_blocks{0}, g_bins{0}, g_segs{0};
@@ -449,11 +451,14 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
   return best;
 }
 
-TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride) {
+TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride, int threads) {
   TriSliceTop t;
-  t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
-  t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
-  t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+  // The three indexes are independent: one task each (each writes only its own member).
+  parallel_for(3, threads, [&](std::size_t k) {
+    if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
+    if (k == 1) t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
+    if (k == 2) t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+  });
   return t;
 }
 

@@ -235,6 +235,8 @@ Status validate(const RoughingParams& p) {
   if (!(p.sampling_mm >= 0.0)) return bad_parameter("roughing sampling must be >= 0 mm");
   if (!(p.adaptive_tolerance_mm >= 0.0))
     return bad_parameter("roughing adaptive tolerance must be >= 0 mm");
+  if (!(p.adaptive_max_step_mm > 0.0))
+    return bad_parameter("roughing adaptive max step must be positive");
   return {};
 }
 
@@ -290,6 +292,7 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
   ScanParams p = params;
   p.stepover_mm = rough.stepover_mm;
   if (rough.sampling_mm > 0.0) p.sampling_mm = rough.sampling_mm;
+  p.adaptive_max_step_mm = rough.adaptive_max_step_mm;
   const double stock_top =
       std::isfinite(rough.stock_top_mm) ? rough.stock_top_mm : model.bounds.max.z;
   Toolpath tp = new_toolpath(tool, "tri-slice scan roughing",
@@ -299,7 +302,7 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
   const int stride =
       std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
   TriSliceTop coarse;
-  if (stride > 1) coarse = TriSliceTop::build(model, 0.5, stride);
+  if (stride > 1) coarse = TriSliceTop::build(model, 0.5, stride, ctx.threads);
   const TriSliceTop& use = stride > 1 ? coarse : top;
   // Table 1: successive inflations, the deepest layer last.
   for (int k = rough.layers - 1; k >= 0; --k) {

@@ -112,7 +112,10 @@ struct ScanHint {
 /// The three families of a model queried together (the xy family only when it was sliced).
 class TriSliceTop {
  public:
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1);
+  /// `threads`: the three families are indexed in parallel (0 = all cores); the index does
+  /// not depend on it.
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1,
+                           int threads = 0);
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,

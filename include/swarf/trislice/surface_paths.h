@@ -59,6 +59,7 @@ struct RoughingParams {
   /// Adaptive tolerance of the roughing lines when ScanParams::adaptive (vertical, mm): far
   /// inside the margin, like the chord sag above.
   double adaptive_tolerance_mm = 0.005;
+  double adaptive_max_step_mm = 8.0;  ///< first-pass CL spacing of the roughing lines
 };
 
 struct ContourParams {
