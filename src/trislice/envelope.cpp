@@ -409,11 +409,17 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
     inl[k] = e.seg_[items[k]];
   e.nseg_ = e.seg_.size();
   e.seg_ = std::move(inl);
+  // The highest level of each cell in a small array of its own: most cells a query walks
+  // are ruled out by it without touching their segments.
+  e.cellmax_.assign(ncell, -kInf);
+  for (std::size_t c = 0; c < ncell; ++c)
+    if (e.start_[c] < e.start_[c + 1]) e.cellmax_[c] = e.seg_[e.start_[c]].z;
   return e;
 }
 
 std::size_t LevelEnvelope::memory_bytes() const {
-  return seg_.size() * sizeof(Seg) + start_.size() * sizeof(std::uint32_t);
+  return seg_.size() * sizeof(Seg) + start_.size() * sizeof(std::uint32_t) +
+         cellmax_.size() * sizeof(double);
 }
 
 double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
@@ -433,6 +439,8 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
       if (room < 0.0) continue;
       const std::size_t c =
           static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+      const double cneed = best - cellmax_[c];
+      if (cneed >= 0.0 && cneed * cneed >= room) continue;
       for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
         const Seg& g = seg_[k];
         const double need = best - g.z;

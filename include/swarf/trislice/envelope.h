@@ -101,6 +101,7 @@ class LevelEnvelope {
   double cell_ = 1.0;
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> start_;
+  std::vector<double> cellmax_;  ///< highest level per cell (-infinity when empty)
 };
 
 /// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
