@@ -260,7 +260,9 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double a0 = std::max(lo, s - rho), a1 = std::min(lo + bin_, s + rho);
     if (a0 > a1) return false;
     const double sp = std::clamp(s + L.k * rho, a0, a1), d = s - sp;
-    return L.a + L.b * (sp - lo - 0.5 * bin_) + std::sqrt(std::max(0.0, rho2 - d * d)) > best;
+    // line + sqrt(rho2 - d^2) > best, squared: no square root.
+    const double need = best - (L.a + L.b * (sp - lo - 0.5 * bin_));
+    return need < 0.0 || rho2 - d * d > need * need;
   };
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
