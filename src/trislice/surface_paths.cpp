@@ -130,28 +130,37 @@ std::size_t coarse_stride(const ScanParams& p) {
 // gentle slopes), leave lattice points out, and a feature hiding there would have to miss
 // all three interior samples. Measured against the uniform grid in
 // TriSlicePaths.AdaptiveScan*.
+//
+// Each sample keeps the scan hint its query ended with, and a new query starts from the hint
+// of its nearest known neighbour: the queries are then as quick as along the uniform grid.
+struct Sample {
+  Vec3 p;
+  ScanHint hint;
+};
+
 template <class Eval>
-void refine(std::size_t a, const Vec3& pa, std::size_t m, const Vec3& pm, std::size_t b,
-            const Vec3& pb, double tol, const Eval& eval, std::vector<Vec3>& out) {
+void refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, std::size_t b,
+            const Sample& sb, double tol, const Eval& eval, std::vector<Vec3>& out) {
   if (b - a <= 2) {
-    if (m != a && m != b) out.push_back(pm);
-    out.push_back(pb);
+    if (m != a && m != b) out.push_back(sm.p);
+    out.push_back(sb.p);
     return;
   }
   const std::size_t q1 = a + (m - a) / 2, q3 = m + (b - m) / 2;
-  const Vec3 p1 = eval(q1), p3 = eval(q3);
+  const Sample s1 = eval(q1, sa.hint), s3 = eval(q3, sm.hint);
+  const Vec3 &pa = sa.p, &pb = sb.p;
   auto off = [&](const Vec3& q) {
     // Lines run along x or y: one of the two differences is zero.
     const double t = (q.x - pa.x + q.y - pa.y) / (pb.x - pa.x + pb.y - pa.y);
     return std::fabs(q.z - (pa.z + t * (pb.z - pa.z))) > 0.5 * tol;
   };
-  if (off(p1) || off(pm) || off(p3)) {
-    refine(a, pa, q1, p1, m, pm, tol, eval, out);
-    refine(m, pm, q3, p3, b, pb, tol, eval, out);
+  if (off(s1.p) || off(sm.p) || off(s3.p)) {
+    refine(a, sa, q1, s1, m, sm, tol, eval, out);
+    refine(m, sm, q3, s3, b, sb, tol, eval, out);
     return;
   }
-  for (const Vec3& q : {p1, pm, p3, pb})
-    out.push_back(q);
+  for (const Sample* q : {&s1, &sm, &s3, &sb})
+    out.push_back(q->p);
 }
 
 // CL lines (tool tips) at offset extra above the part, tips clipped to clip_z (roughing layers
@@ -179,30 +188,35 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
   std::vector<std::vector<Vec3>> lines(across.size());
   parallel_for(across.size(), ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;
-    ScanHint hint;
-    auto eval = [&](std::size_t k) {
+    auto eval = [&](std::size_t k, const ScanHint& from) {
       const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
-      const double c = top.centre_height(xy, R, primary, &hint);
+      Sample out{{}, from};
+      const double c = top.centre_height(xy, R, primary, &out.hint);
       const double z = c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z;
-      return Vec3{xy.x, xy.y, std::min(z, clip_z)};
+      out.p = {xy.x, xy.y, std::min(z, clip_z)};
+      return out;
     };
     std::vector<Vec3>& line = lines[i];
     if (along.empty()) return;
     if (stride <= 1) {
       line.reserve(along.size());
-      for (std::size_t k = 0; k < along.size(); ++k)
-        line.push_back(eval(k));
+      ScanHint hint;
+      for (std::size_t k = 0; k < along.size(); ++k) {
+        const Sample q = eval(k, hint);
+        hint = q.hint;
+        line.push_back(q.p);
+      }
       return;
     }
-    Vec3 pa = eval(0);
-    line.push_back(pa);
+    Sample sa = eval(0, ScanHint{});
+    line.push_back(sa.p);
     for (std::size_t a = 0; a + 1 < along.size();) {
       const std::size_t b = std::min(a + stride, along.size() - 1), m = a + (b - a) / 2;
-      const Vec3 pb = eval(b);
-      const Vec3 pm = m != a ? eval(m) : pa;
-      refine(a, pa, m, pm, b, pb, tol, eval, line);
+      const Sample sm = m != a ? eval(m, sa.hint) : sa;
+      const Sample sb = eval(b, sm.hint);
+      refine(a, sa, m, sm, b, sb, tol, eval, line);
       a = b;
-      pa = pb;
+      sa = sb;
     }
   });
   if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
