@@ -138,13 +138,14 @@ struct Sample {
   ScanHint hint;
 };
 
+// Returns whether the stretch was accepted whole.
 template <class Eval>
-void refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, std::size_t b,
+bool refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, std::size_t b,
             const Sample& sb, double tol, const Eval& eval, std::vector<Vec3>& out) {
   if (b - a <= 2) {
     if (m != a && m != b) out.push_back(sm.p);
     out.push_back(sb.p);
-    return;
+    return true;
   }
   const std::size_t q1 = a + (m - a) / 2, q3 = m + (b - m) / 2;
   const Sample s1 = eval(q1, sa.hint), s3 = eval(q3, sm.hint);
@@ -157,10 +158,11 @@ void refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, st
   if (off(s1.p) || off(sm.p) || off(s3.p)) {
     refine(a, sa, q1, s1, m, sm, tol, eval, out);
     refine(m, sm, q3, s3, b, sb, tol, eval, out);
-    return;
+    return false;
   }
   for (const Sample* q : {&s1, &sm, &s3, &sb})
     out.push_back(q->p);
+  return true;
 }
 
 // CL lines (tool tips) at offset extra above the part, tips clipped to clip_z (roughing layers
@@ -208,13 +210,18 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
       }
       return;
     }
+    // Step control: a stretch refined down to the lattice is followed by one half as long
+    // (not below four steps), an accepted one by one twice as long (up to the stride), so
+    // curved stretches are walked in short steps whose hints come from close by.
     Sample sa = eval(0, ScanHint{});
     line.push_back(sa.p);
+    std::size_t h = stride;
     for (std::size_t a = 0; a + 1 < along.size();) {
-      const std::size_t b = std::min(a + stride, along.size() - 1), m = a + (b - a) / 2;
+      const std::size_t b = std::min(a + h, along.size() - 1), m = a + (b - a) / 2;
       const Sample sm = m != a ? eval(m, sa.hint) : sa;
       const Sample sb = eval(b, sm.hint);
-      refine(a, sa, m, sm, b, sb, tol, eval, line);
+      const bool whole = refine(a, sa, m, sm, b, sb, tol, eval, line);
+      h = whole ? std::min(2 * h, stride) : std::max<std::size_t>(4, h / 2);
       a = b;
       sa = sb;
     }
