@@ -104,8 +104,9 @@ Toolpath new_toolpath(const Tool& tool, std::string name, double clearance) {
 }
 
 // Stride of the first adaptive pass: the largest power of two k with k * sampling <= max step.
+// At least 8: stretches of four steps or less are evaluated at every lattice point anyway.
 std::size_t coarse_stride(const ScanParams& p) {
-  std::size_t k = 1;
+  std::size_t k = 8;
   while (2.0 * static_cast<double>(k) * p.sampling_mm <= p.adaptive_max_step_mm + 1e-9 && k < 1024)
     k *= 2;
   return k;

@@ -25,7 +25,7 @@ struct ScanParams {
   double sampling_mm = 0.1;   ///< CL point spacing along a line before simplification
   /// Adaptive sampling along the lines (as OpenCAMLib's AdaptivePathDropCutter): the CL
   /// points lie on the sampling_mm lattice of the uniform grid, but only every
-  /// 2^k-th one (2^k * sampling <= adaptive_max_step_mm) is evaluated first; a stretch is
+  /// 2^k-th one (2^k * sampling <= adaptive_max_step_mm, 2^k >= 8) is evaluated first; a stretch is
   /// halved, down to sampling_mm, while its evaluated midpoint leaves the chord by more than
   /// adaptive_tolerance_mm. false: every lattice point (the uniform grid). See
   /// docs/trislice.md for the argument and the test against the uniform grid.
