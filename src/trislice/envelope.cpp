@@ -416,12 +416,25 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
   e.cellmax_.assign(ncell, -kInf);
   for (std::size_t c = 0; c < ncell; ++c)
     if (e.start_[c] < e.start_[c + 1]) e.cellmax_[c] = e.seg_[e.start_[c]].z;
+  // And per square of kSuper x kSuper cells, so a query rules out most of the area around a
+  // flat stretch with a few tests.
+  e.nsx_ = (e.nx_ + kSuper - 1) / kSuper;
+  e.nsy_ = (e.ny_ + kSuper - 1) / kSuper;
+  e.supermax_.assign(static_cast<std::size_t>(e.nsx_) * static_cast<std::size_t>(e.nsy_), -kInf);
+  for (int j = 0; j < e.ny_; ++j)
+    for (int i = 0; i < e.nx_; ++i) {
+      double& m =
+          e.supermax_[static_cast<std::size_t>(j / kSuper) * static_cast<std::size_t>(e.nsx_) +
+                      static_cast<std::size_t>(i / kSuper)];
+      m = std::max(m, e.cellmax_[static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
+                                 static_cast<std::size_t>(i)]);
+    }
   return e;
 }
 
 std::size_t LevelEnvelope::memory_bytes() const {
   return seg_.size() * sizeof(Seg) + start_.size() * sizeof(std::uint32_t) +
-         cellmax_.size() * sizeof(double);
+         (cellmax_.size() + supermax_.size()) * sizeof(double);
 }
 
 double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
@@ -431,30 +444,45 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
   const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + r - origin_.x) / cell_)));
   const int j0 = std::max(0, static_cast<int>(std::floor((p.y - r - origin_.y) / cell_)));
   const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y + r - origin_.y) / cell_)));
-  for (int j = j0; j <= j1; ++j) {
-    const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
-    const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
-    for (int i = i0; i <= i1; ++i) {
-      const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
-      const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
-      const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
-      if (room < 0.0) continue;
-      const std::size_t c =
-          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
-      const double cneed = best - cellmax_[c];
-      if (cneed >= 0.0 && cneed * cneed >= room) continue;
-      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-        const Seg& g = seg_[k];
-        const double need = best - g.z;
-        if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-        const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
-        const double len2 = ex * ex + ey * ey;
-        double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
-        t = std::clamp(t, 0.0, 1.0);
-        const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
-        const double d2 = qx * qx + qy * qy;
-        if (d2 > r2) continue;
-        best = std::max(best, g.z + std::sqrt(r2 - d2));
+  const double sc = cell_ * kSuper;
+  for (int sj = j0 / kSuper; sj <= j1 / kSuper; ++sj) {
+    const double sy0 = origin_.y + sj * sc;
+    const double sdy = std::max({sy0 - p.y, 0.0, p.y - sy0 - sc});
+    for (int si = i0 / kSuper; si <= i1 / kSuper; ++si) {
+      const double sx0 = origin_.x + si * sc;
+      const double sdx = std::max({sx0 - p.x, 0.0, p.x - sx0 - sc});
+      const double sroom = r2 - sdx * sdx - sdy * sdy;
+      if (sroom < 0.0) continue;
+      const double sneed =
+          best - supermax_[static_cast<std::size_t>(sj) * static_cast<std::size_t>(nsx_) +
+                           static_cast<std::size_t>(si)];
+      if (sneed >= 0.0 && sneed * sneed >= sroom) continue;
+      for (int j = std::max(j0, sj * kSuper); j <= std::min(j1, sj * kSuper + kSuper - 1); ++j) {
+        const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
+        const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
+        for (int i = std::max(i0, si * kSuper); i <= std::min(i1, si * kSuper + kSuper - 1); ++i) {
+          const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
+          const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
+          const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
+          if (room < 0.0) continue;
+          const std::size_t c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(i);
+          const double cneed = best - cellmax_[c];
+          if (cneed >= 0.0 && cneed * cneed >= room) continue;
+          for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+            const Seg& g = seg_[k];
+            const double need = best - g.z;
+            if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
+            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+            const double len2 = ex * ex + ey * ey;
+            double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
+            t = std::clamp(t, 0.0, 1.0);
+            const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+            const double d2 = qx * qx + qy * qy;
+            if (d2 > r2) continue;
+            best = std::max(best, g.z + std::sqrt(r2 - d2));
+          }
+        }
       }
     }
   }

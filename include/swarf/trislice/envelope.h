@@ -101,7 +101,10 @@ class LevelEnvelope {
   double cell_ = 1.0;
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> start_;
-  std::vector<double> cellmax_;  ///< highest level per cell (-infinity when empty)
+  std::vector<double> cellmax_;     ///< highest level per cell (-infinity when empty)
+  static constexpr int kSuper = 4;  ///< cells per side of a super-cell
+  int nsx_ = 0, nsy_ = 0;
+  std::vector<double> supermax_;  ///< highest level per super-cell
 };
 
 /// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
