@@ -1,6 +1,7 @@
 // Tri-slice model, Eq. (1) offsets and the point-wise top envelope (seed 001 section 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/mesh/generate.h"
@@ -207,6 +208,33 @@ TEST(ConvolutionalOffset, EnvelopePruningEqualsBruteForce) {
       }
     EXPECT_GT(n, 2000u);
   }
+}
+
+// The level index (cells, super-cells, highest level first) against every ring edge of every
+// xy slice: z_l + sqrt(r^2 - d^2) for the nearest point of the edge within r.
+TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
+  auto model = build_trislice_families(make_filleted_torus_part(), 0.25, {false, false, true});
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fam = model->family(Axis::kZ);
+  const LevelEnvelope env = LevelEnvelope::build(fam);
+  const double r = 4.0;
+  std::size_t n = 0;
+  for (double y = -43.0; y <= 43.0; y += 4.3)
+    for (double x = -43.0; x <= 43.0; x += 0.53) {
+      double brute = -1e9;
+      for (std::size_t j = 0; j < fam.size(); ++j)
+        for (const Ring& ring : fam.slices[j].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
+            const double len2 = dot(e, e);
+            const double t = len2 > 0 ? std::clamp(dot(Vec2{x, y} - a, e) / len2, 0.0, 1.0) : 0.0;
+            const double d2 = norm_sq(a + e * t - Vec2{x, y});
+            if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
+          }
+      EXPECT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
+      ++n;
+    }
+  EXPECT_GT(n, 3000u);
 }
 
 }  // namespace
