@@ -239,3 +239,35 @@ TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// convolve_slices (each neighbour offset once, shared by the two levels that use it) must
+// give convolve_slice's result at every level, inflating and shrinking, with a stride and
+// across the ends of the family.
+TEST(ConvolutionalOffset, SlicesInOneGoEqualSliceBySlice) {
+  const Mesh torus = make_torus({0, 0, 2}, 10, 4, 48, 24);
+  auto model = build_trislice_families(torus, 0.25, {false, true, false});
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fy = model->family(Axis::kY);
+  const long first = lattice_index(fy, 0) - 14;
+  const std::size_t count = fy.size() + 28;
+  for (int stride : {1, 3})
+    for (double r : {3.0, -1.5}) {
+      ConvolutionOptions co;
+      co.neighbour_stride = stride;
+      const std::vector<PolygonSet> all = convolve_slices(fy, first, count, r, co);
+      ASSERT_EQ(all.size(), count);
+      std::size_t nonempty = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        const PolygonSet one = convolve_slice(fy, first + static_cast<long>(k), r, co);
+        ASSERT_EQ(all[k].rings, one.rings) << "level " << k << " r " << r << " stride " << stride;
+        nonempty += !one.empty();
+      }
+      EXPECT_GT(nonempty, 20u);
+    }
+}
+
+}  // namespace
+}  // namespace swarf
