@@ -182,6 +182,26 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   return e;
 }
 
+double SliceEnvelope::drop_on(const Seg& g, double s, double rho, double rho2) {
+  double c = -kInf;
+  const double d0 = s - g.s0, d1 = s - g.s1;
+  if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
+  if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
+  if (g.nz > 0.0) {
+    const double qs = s - rho * g.ns;
+    if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
+  }
+  return c;
+}
+
+double SliceEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
+  if (hint >= seg_.size()) return -kInf;
+  const double q = axis_ == Axis::kX ? p.x : p.y, s = axis_ == Axis::kX ? p.y : p.x;
+  const double dq = q - (first_ + static_cast<double>(slice_of_[hint]) * pitch_);
+  const double rho2 = r * r - dq * dq;
+  return rho2 >= 0.0 ? drop_on(seg_[hint], s, std::sqrt(rho2), rho2) : -kInf;
+}
+
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
          start_.size() * sizeof(std::uint32_t) +
@@ -223,15 +243,7 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
   // where the upward normal points at the centre).
   auto drop = [&](std::uint32_t id, double rho, double rho2) {
-    const Seg& g = seg_[id];
-    double c = -kInf;
-    const double d0 = s - g.s0, d1 = s - g.s1;
-    if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
-    if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
-    if (g.nz > 0.0) {
-      const double qs = s - rho * g.ns;
-      if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
-    }
+    const double c = drop_on(seg_[id], s, rho, rho2);
     if (c > best) {
       best = c;
       best_id = id;
@@ -437,8 +449,23 @@ std::size_t LevelEnvelope::memory_bytes() const {
          (cellmax_.size() + supermax_.size()) * sizeof(double);
 }
 
-double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
+double LevelEnvelope::drop_on(const Seg& g, Vec2 p, double r2) {
+  const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+  const double len2 = ex * ex + ey * ey;
+  double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+  const double d2 = qx * qx + qy * qy;
+  return d2 > r2 ? -kInf : g.z + std::sqrt(r2 - d2);
+}
+
+double LevelEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
+  return hint < seg_.size() ? drop_on(seg_[hint], p, r * r) : -kInf;
+}
+
+double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
   if (seg_.empty() || !(r > 0.0)) return best;
+  std::uint32_t best_k = SliceEnvelope::kNoHint;
   const double r2 = r * r;
   const int i0 = std::max(0, static_cast<int>(std::floor((p.x - r - origin_.x) / cell_)));
   const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + r - origin_.x) / cell_)));
@@ -473,19 +500,17 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
             const Seg& g = seg_[k];
             const double need = best - g.z;
             if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
-            const double len2 = ex * ex + ey * ey;
-            double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
-            t = std::clamp(t, 0.0, 1.0);
-            const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
-            const double d2 = qx * qx + qy * qy;
-            if (d2 > r2) continue;
-            best = std::max(best, g.z + std::sqrt(r2 - d2));
+            const double h = drop_on(g, p, r2);
+            if (h > best) {
+              best = h;
+              best_k = k;
+            }
           }
         }
       }
     }
   }
+  if (hint != nullptr && best_k != SliceEnvelope::kNoHint) *hint = best_k;
   return best;
 }
 
@@ -503,10 +528,17 @@ TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int st
 double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* hint) const {
   const SliceEnvelope& a = primary == Axis::kX ? x_ : y_;
   const SliceEnvelope& b = primary == Axis::kX ? y_ : x_;
-  std::uint32_t* ha = hint != nullptr ? &hint->primary : nullptr;
-  std::uint32_t* hb = hint != nullptr ? &hint->secondary : nullptr;
-  return z_.centre_height(p, r_mm,
-                          b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb));
+  if (hint == nullptr)
+    return z_.centre_height(p, r_mm, b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf)));
+  // The three families' previous winners first: whichever family holds the point up, every
+  // search then starts from about the final height and prunes from its first bound.
+  const double seed =
+      std::max({a.hint_height(p, r_mm, hint->primary), b.hint_height(p, r_mm, hint->secondary),
+                z_.hint_height(p, r_mm, hint->level)});
+  return z_.centre_height(
+      p, r_mm,
+      b.centre_height(p, r_mm, a.centre_height(p, r_mm, seed, &hint->primary), &hint->secondary),
+      &hint->level);
 }
 
 }  // namespace swarf

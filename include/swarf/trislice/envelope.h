@@ -41,6 +41,8 @@ class SliceEnvelope {
   /// and out; it only speeds the query up, the answer does not depend on it.
   double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
   static constexpr std::uint32_t kNoHint = 0xffffffffu;
+  /// The height that the hinted segment alone gives (-infinity for no hint): a lower bound.
+  double hint_height(Vec2 p, double r_mm, std::uint32_t hint) const;
 
   std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
@@ -51,6 +53,7 @@ class SliceEnvelope {
     double ns, nz, slope;   ///< upward unit normal; dz/ds (nz == 0 marks a vertical edge)
     double top;             ///< max(z0, z1): a cheap bound before the exact drop
   };
+  static double drop_on(const Seg& g, double s, double rho, double rho2);
   Axis axis_ = Axis::kY;
   double first_ = 0.0, pitch_ = 1.0;
   std::size_t n_ = 0;  ///< slices
@@ -87,7 +90,9 @@ class SliceEnvelope {
 class LevelEnvelope {
  public:
   static LevelEnvelope build(const SliceFamily& xy_family, double cell_mm = 1.0, int stride = 1);
-  double centre_height(Vec2 p, double r_mm, double at_least) const;
+  /// `hint` as for SliceEnvelope: the ring edge that decided the previous query.
+  double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
+  double hint_height(Vec2 p, double r_mm, std::uint32_t hint) const;
   std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
@@ -95,6 +100,7 @@ class LevelEnvelope {
   struct Seg {
     double x0, y0, x1, y1, z;
   };
+  static double drop_on(const Seg& g, Vec2 p, double r2);
   std::size_t nseg_ = 0;
   std::vector<Seg> seg_;  ///< CSR items over the cells, in place, highest level first
   Vec2 origin_;
@@ -111,6 +117,7 @@ class LevelEnvelope {
 struct ScanHint {
   std::uint32_t primary = SliceEnvelope::kNoHint;
   std::uint32_t secondary = SliceEnvelope::kNoHint;
+  std::uint32_t level = SliceEnvelope::kNoHint;
 };
 
 /// The three families of a model queried together (the xy family only when it was sliced).
