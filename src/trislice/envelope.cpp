@@ -58,20 +58,18 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         Seg s{};
         if (family.axis == Axis::kX) {  // (u, v) = (y, z)
           nz = -du;
-          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0, 0.0};
+          s = {a.x, a.y, b.x, b.y, 0.0, 0.0};
         } else {  // kY: (u, v) = (z, x)
           nz = dv;
-          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0, 0.0};
+          s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
         }
         if (nz < -1e-12 * std::hypot(du, dv)) continue;
-        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0, 0};
-        s.top = std::max(s.z0, s.z1);
+        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
         // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
         const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
         if (ds_ > 1e-12 && len > 0.0) {
           s.ns = -dz_ / len;
           s.nz = ds_ / len;
-          s.slope = dz_ / ds_;
         }  // else vertical (nz stays 0): only its end points can be touched
         smin = std::min(smin, s.s0);
         smax = std::max(smax, s.s1);
@@ -111,7 +109,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.seg_[fill[c]] = s;
         e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
-        e.binmax_[c] = std::max(e.binmax_[c], s.top);
+        e.binmax_[c] = std::max({e.binmax_[c], s.z0, s.z1});
       }
     }
     std::vector<Seg>().swap(per[j]);
@@ -125,7 +123,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
     const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
     const double mid = lo + 0.5 * e.bin_;
     double zl = -kInf, zh = -kInf;
-    auto clip = [&](const Seg& g, double at) { return g.z0 + (at - g.s0) * g.slope; };
+    auto clip = [&](const Seg& g, double at) { return g.z0 - (at - g.s0) * g.ns / g.nz; };
     for (std::uint32_t k = e.start_[c]; k < e.start_[c + 1]; ++k) {
       const Seg& g = e.seg_[k];
       if (g.nz > 0.0 && g.s0 <= lo && g.s1 >= lo) zl = std::max(zl, clip(g, lo));
@@ -189,7 +187,7 @@ double SliceEnvelope::drop_on(const Seg& g, double s, double rho, double rho2) {
   if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
   if (g.nz > 0.0) {
     const double qs = s - rho * g.ns;
-    if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
+    if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 - (qs - g.s0) * g.ns / g.nz + rho * g.nz);
   }
   return c;
 }
@@ -330,7 +328,7 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
           // The segment's box first: no point of it rises above top, nor lies nearer than dx
           // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
           const Seg& g = seg_[k];
-          const double need = best - g.top;
+          const double need = best - std::max(g.z0, g.z1);
           if (need >= 0.0) {
             const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
             if (rho2 - dx * dx <= need * need) continue;

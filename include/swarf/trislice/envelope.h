@@ -50,8 +50,7 @@ class SliceEnvelope {
  private:
   struct Seg {
     double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
-    double ns, nz, slope;   ///< upward unit normal; dz/ds (nz == 0 marks a vertical edge)
-    double top;             ///< max(z0, z1): a cheap bound before the exact drop
+    double ns, nz;          ///< upward unit normal (nz == 0 marks a vertical edge)
   };
   static double drop_on(const Seg& g, double s, double rho, double rho2);
   Axis axis_ = Axis::kY;
