@@ -143,9 +143,13 @@ struct Sample {
 template <class Eval>
 bool refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, std::size_t b,
             const Sample& sb, double tol, const Eval& eval, std::vector<Vec3>& out) {
-  if (b - a <= 2) {
-    if (m != a && m != b) out.push_back(sm.p);
-    out.push_back(sb.p);
+  if (b - a <= 3) {  // every lattice point (m known; a third one at the end of a line)
+    ScanHint hint = sa.hint;
+    for (std::size_t k = a + 1; k <= b; ++k) {
+      const Sample q = k == m ? sm : k == b ? sb : eval(k, hint);
+      hint = q.hint;
+      out.push_back(q.p);
+    }
     return true;
   }
   const std::size_t q1 = a + (m - a) / 2, q3 = m + (b - m) / 2;

@@ -315,3 +315,47 @@ TEST(TriSlicePaths, AdaptiveScanStaysWithinToleranceOfTheUniformGrid) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Adaptive lines of any length (the last stretch of a line is not a power of two): strictly
+// increasing along the line, both ends kept, every point equal to the uniform grid's there.
+TEST(TriSlicePaths, AdaptiveLinesAreSubsetsOfTheUniformGridForAnyLength) {
+  const Mesh torus = make_torus({0, 0, 5}, 12, 5, 48, 24);
+  auto model = build_trislice(torus, 0.25);
+  ASSERT_TRUE(model.ok());
+  const TriSliceTop top = TriSliceTop::build(*model);
+  for (double sampling : {0.1, 0.13, 0.3, 0.7})
+    for (double width : {20.0, 20.3, 21.1}) {
+      ScanParams p;
+      p.stepover_mm = 3.0;
+      p.sampling_mm = sampling;
+      p.region = Box2{{-10.0, -10.0}, {-10.0 + width, 10.0}};
+      p.adaptive = false;
+      auto u = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      p.adaptive = true;
+      auto a = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      ASSERT_TRUE(u.ok() && a.ok());
+      ASSERT_EQ(u->size(), a->size());
+      for (std::size_t i = 0; i < u->size(); ++i) {
+        const std::vector<Vec3>&ul = (*u)[i], &al = (*a)[i];
+        ASSERT_FALSE(al.empty());
+        EXPECT_EQ(al.front(), ul.front());
+        EXPECT_EQ(al.back(), ul.back());
+        std::size_t k = 0;
+        for (std::size_t j = 0; j < al.size(); ++j) {
+          if (j > 0) {
+            EXPECT_GT(al[j].x, al[j - 1].x) << sampling << " " << width;
+          }
+          while (k < ul.size() && ul[k].x != al[j].x)
+            ++k;
+          ASSERT_LT(k, ul.size());
+          EXPECT_EQ(ul[k], al[j]);
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace swarf
