@@ -57,8 +57,14 @@ void BM_TriSliceTable2(benchmark::State& state) {
     auto r = scan_roughing(*model, top, tool, sp, rough);
     const double t2 = now(), c2 = cpu();
     sp.stepover_mm = 0.25;
-    auto f = scan_finishing(*model, top, tool, sp);
+    sp.adaptive = state.range(1) != 0;
+    auto lines = scan_cl_lines(top, model->bounds, tool.radius(), 0.0, sp);
+    std::size_t points = 0;
+    for (const auto& l : *lines)
+      points += l.size();
+    auto f = scan_finishing_from_lines(*model, top, tool, sp, std::move(lines).value());
     const double t3 = now(), c3 = cpu();
+    state.counters["cl_points"] = static_cast<double>(points);
     benchmark::DoNotOptimize(r);
     benchmark::DoNotOptimize(f);
     state.counters["model_s"] = t1 - t0;
@@ -75,8 +81,9 @@ void BM_TriSliceTable2(benchmark::State& state) {
         static_cast<double>(model->family(Axis::kX).size() + model->family(Axis::kY).size());
   }
 }
+// Second argument: 1 = adaptive sampling along the lines (the default), 0 = uniform grid.
 BENCHMARK(BM_TriSliceTable2)
-    ->DenseRange(0, 4)
+    ->ArgsProduct({{0, 1, 2, 3, 4}, {1, 0}})
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
@@ -113,6 +120,7 @@ void BM_TriSliceTable3(benchmark::State& state) {
     ScanParams sp;
     sp.stepover_mm = 0.5;
     sp.sampling_mm = 0.1;
+    sp.adaptive = false;  // compared point by point with the drop-cutter's grid
     auto lines = scan_cl_lines(top, model->bounds, 4.0, 0.0, sp);
     std::size_t k = 0, n1 = 0, n2 = 0, n5 = 0;
     double mx = 0.0;
@@ -146,6 +154,7 @@ void BM_TriSliceScanProgram(benchmark::State& state) {
     ScanParams sp;
     sp.stepover_mm = 0.5;
     sp.sampling_mm = 0.1;
+    sp.adaptive = state.range(0) != 0;
     auto lines = scan_cl_lines(top, model->bounds, 4.0, 0.0, sp);
     std::size_t n = 0;
     for (const auto& l : *lines)
@@ -154,7 +163,12 @@ void BM_TriSliceScanProgram(benchmark::State& state) {
     state.counters["cpu_s"] = cpu() - c0;
   }
 }
-BENCHMARK(BM_TriSliceScanProgram)->Iterations(3)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_TriSliceScanProgram)
+    ->Arg(0)
+    ->Arg(1)
+    ->Iterations(3)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 // The exact drop-cutter on the same grid (index build included).
 void BM_DropCutterScanProgram(benchmark::State& state) {

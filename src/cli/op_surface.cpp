@@ -81,10 +81,14 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   sp.sampling_mm = p["sampling"].get<double>();
   sp.stock_to_leave_mm = p["stock_to_leave"].get<double>();
   sp.tolerance_mm = p["tolerance"].get<double>();
+  // Adaptive sampling along the lines unless --uniform (the CSV then holds the full grid).
+  sp.adaptive = !p["uniform"].get<bool>();
+  sp.adaptive_max_step_mm = p["max_step"].get<double>();
+  sp.adaptive_tolerance_mm = p["adaptive_tolerance"].get<double>();
   sp.feed_mm_min = feed;
   sp.plunge_feed_mm_min = plunge;
   const auto t1 = std::chrono::steady_clock::now();
-  const TriSliceTop top = TriSliceTop::build(*model);
+  const TriSliceTop top = TriSliceTop::build(*model, 0.5, 1, ctx.threads);
   const int layers = p["rough_layers"].get<int>();
   if (layers > 0) {
     RoughingParams rp;
@@ -111,7 +115,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   out.summary["cl_points"] = n;
   out.toolpaths.push_back(std::move(fin).value());
   // The CSV holds the finishing CL points (tool tips) before simplification, for comparison
-  // with a drop-cutter on the same grid.
+  // with a drop-cutter on the same grid (with --uniform: every grid point).
   out.csv_override = std::move(csv);
   return out;
 }
@@ -128,6 +132,11 @@ const OperationRegistrar kRegister{Operation{
         {"zigzag", ParamType::kBool, false, "alternate line directions (default one-way)"},
         {"stepover", ParamType::kNumber, 0.25, "distance between scan lines / contour rings, mm"},
         {"sampling", ParamType::kNumber, 0.1, "CL point spacing along a scan line, mm"},
+        {"uniform", ParamType::kBool, false,
+         "evaluate every sampling point (default: adaptive, refined where the path bends)"},
+        {"max_step", ParamType::kNumber, 1.6, "adaptive: first-pass CL spacing, mm"},
+        {"adaptive_tolerance", ParamType::kNumber, 0.001,
+         "adaptive: refine while a midpoint leaves the chord by more, mm"},
         {"pitch", ParamType::kNumber, 0.05, "slice pitch of the tri-slice model, mm"},
         {"stock_to_leave", ParamType::kNumber, 0.0, "material left on the part, mm"},
         {"rough_layers", ParamType::kInteger, 0, "roughing layers before finishing (Table 1: 5)"},

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "swarf/core/parallel.h"
+
 namespace swarf {
 #ifdef SWARF_ENV_COUNT
 std::atomic<long> g_blocks{0}, g_bins{0}, g_segs{0};
@@ -56,19 +58,18 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         Seg s{};
         if (family.axis == Axis::kX) {  // (u, v) = (y, z)
           nz = -du;
-          s = {a.x, a.y, b.x, b.y, 0.0, 0.0, 0.0};
+          s = {a.x, a.y, b.x, b.y, 0.0, 0.0};
         } else {  // kY: (u, v) = (z, x)
           nz = dv;
-          s = {a.y, a.x, b.y, b.x, 0.0, 0.0, 0.0};
+          s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
         }
         if (nz < -1e-12 * std::hypot(du, dv)) continue;
-        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0, 0};
+        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
         // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
         const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
         if (ds_ > 1e-12 && len > 0.0) {
           s.ns = -dz_ / len;
           s.nz = ds_ / len;
-          s.slope = dz_ / ds_;
         }  // else vertical (nz stays 0): only its end points can be touched
         smin = std::min(smin, s.s0);
         smax = std::max(smax, s.s1);
@@ -83,35 +84,61 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   e.smin_ = smin;
   e.nb_ = static_cast<int>(std::floor((smax - smin) / e.bin_)) + 1;
   const std::size_t nb = static_cast<std::size_t>(e.nb_);
-  std::size_t total = 0;
+  e.nseg_ = 0;
   for (const auto& v : per)
-    total += v.size();
-  e.seg_.reserve(total);
+    e.nseg_ += v.size();
   e.start_.assign(e.n_ * nb + 1, 0);
   e.binmax_.assign(e.n_ * nb, -kInf);
   auto bin_of = [&](double s) {
     return std::clamp(static_cast<int>(std::floor((s - e.smin_) / e.bin_)), 0, e.nb_ - 1);
   };
-  // Count, then fill (CSR).
+  // Count, then fill (CSR). A segment is copied into every bin it spans, so a query reads
+  // the segments of a bin, and of consecutive bins of a slice, from one run of memory.
   for (std::size_t j = 0; j < e.n_; ++j)
     for (const Seg& s : per[j])
       for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
         ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
   for (std::size_t c = 0; c < e.n_ * nb; ++c)
     e.start_[c + 1] += e.start_[c];
-  e.items_.resize(e.start_.back());
+  e.seg_.resize(e.start_.back());
+  e.slice_of_.resize(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
     for (const Seg& s : per[j]) {
-      const auto id = static_cast<std::uint32_t>(e.seg_.size());
-      e.seg_.push_back(s);
-      e.slice_of_.push_back(static_cast<std::uint32_t>(j));
       for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
-        e.items_[fill[c]++] = id;
-        e.binmax_[c] = std::max(e.binmax_[c], std::max(s.z0, s.z1));
+        e.seg_[fill[c]] = s;
+        e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
+        e.binmax_[c] = std::max({e.binmax_[c], s.z0, s.z1});
       }
     }
+    std::vector<Seg>().swap(per[j]);
+  }
+  // Upper lines per (slice, bin): the slope of the highest edges across the bin, raised until
+  // every edge end inside the bin (clipped to it) lies under the line. Edges are straight, so
+  // their ends bound them.
+  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0});
+  for (std::size_t c = 0; c < e.n_ * nb; ++c) {
+    if (e.start_[c] == e.start_[c + 1]) continue;
+    const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
+    const double mid = lo + 0.5 * e.bin_;
+    double zl = -kInf, zh = -kInf;
+    auto clip = [&](const Seg& g, double at) { return g.z0 - (at - g.s0) * g.ns / g.nz; };
+    for (std::uint32_t k = e.start_[c]; k < e.start_[c + 1]; ++k) {
+      const Seg& g = e.seg_[k];
+      if (g.nz > 0.0 && g.s0 <= lo && g.s1 >= lo) zl = std::max(zl, clip(g, lo));
+      if (g.nz > 0.0 && g.s0 <= hi && g.s1 >= hi) zh = std::max(zh, clip(g, hi));
+    }
+    const double b = zl > -kInf && zh > -kInf ? (zh - zl) / e.bin_ : 0.0;
+    double a = -kInf;
+    for (std::uint32_t k = e.start_[c]; k < e.start_[c + 1]; ++k) {
+      const Seg& g = e.seg_[k];
+      const double s0 = std::max(g.s0, lo), s1 = std::min(g.s1, hi);
+      const double z0 = g.nz > 0.0 && g.s0 < lo ? clip(g, lo) : g.z0;
+      const double z1 = g.nz > 0.0 && g.s1 > hi ? clip(g, hi) : g.z1;
+      a = std::max({a, z0 - b * (s0 - mid), z1 - b * (s1 - mid)});
+    }
+    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b)};
   }
   // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
   // kBlock^2 slices: a query rejects far slices wholesale with few checks.
@@ -129,13 +156,55 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
       sm = std::max(sm, v);
     }
+  // Block lines per (block, bin): one slope for the block (that of its highest line ends),
+  // raised over every slice's line: a_j + b_j t <= a + b t + |b_j - b| w / 2 on the bin.
+  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0});
+  for (std::size_t blk = 0; blk < nblock; ++blk)
+    for (std::size_t b = 0; b < nb; ++b) {
+      double zl = -kInf, zh = -kInf;
+      const std::size_t j1 = std::min(e.n_, (blk + 1) * kBlock);
+      for (std::size_t j = blk * kBlock; j < j1; ++j) {
+        const Line& L = e.line_[j * nb + b];
+        zl = std::max(zl, L.a - 0.5 * e.bin_ * L.b);
+        zh = std::max(zh, L.a + 0.5 * e.bin_ * L.b);
+      }
+      if (!(zl > -kInf)) continue;
+      const double slope = (zh - zl) / e.bin_;
+      double a = -kInf;
+      for (std::size_t j = blk * kBlock; j < j1; ++j) {
+        const Line& L = e.line_[j * nb + b];
+        if (L.a > -kInf) a = std::max(a, L.a + std::fabs(L.b - slope) * 0.5 * e.bin_);
+      }
+      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope)};
+    }
   return e;
+}
+
+double SliceEnvelope::drop_on(const Seg& g, double s, double rho, double rho2) {
+  double c = -kInf;
+  const double d0 = s - g.s0, d1 = s - g.s1;
+  if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
+  if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
+  if (g.nz > 0.0) {
+    const double qs = s - rho * g.ns;
+    if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 - (qs - g.s0) * g.ns / g.nz + rho * g.nz);
+  }
+  return c;
+}
+
+double SliceEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
+  if (hint >= seg_.size()) return -kInf;
+  const double q = axis_ == Axis::kX ? p.x : p.y, s = axis_ == Axis::kX ? p.y : p.x;
+  const double dq = q - (first_ + static_cast<double>(slice_of_[hint]) * pitch_);
+  const double rho2 = r * r - dq * dq;
+  return rho2 >= 0.0 ? drop_on(seg_[hint], s, std::sqrt(rho2), rho2) : -kInf;
 }
 
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
-         (start_.size() + items_.size()) * sizeof(std::uint32_t) +
-         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double);
+         start_.size() * sizeof(std::uint32_t) +
+         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double) +
+         (line_.size() + blockline_.size()) * sizeof(Line);
 }
 
 double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
@@ -172,15 +241,7 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
   // where the upward normal points at the centre).
   auto drop = [&](std::uint32_t id, double rho, double rho2) {
-    const Seg& g = seg_[id];
-    double c = -kInf;
-    const double d0 = s - g.s0, d1 = s - g.s1;
-    if (std::fabs(d0) <= rho) c = g.z0 + std::sqrt(rho2 - d0 * d0);
-    if (std::fabs(d1) <= rho) c = std::max(c, g.z1 + std::sqrt(rho2 - d1 * d1));
-    if (g.nz > 0.0) {
-      const double qs = s - rho * g.ns;
-      if (qs >= g.s0 && qs <= g.s1) c = std::max(c, g.z0 + (qs - g.s0) * g.slope + rho * g.nz);
-    }
+    const double c = drop_on(seg_[id], s, rho, rho2);
     if (c > best) {
       best = c;
       best_id = id;
@@ -201,6 +262,17 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     if (room < 0.0) return false;
     const double need = best - top;
     return need < 0.0 || room > need * need;
+  };
+  // The disc over a bin's upper line: its top is highest where the circle's slope matches the
+  // line's, s' = s + k rho, clamped to the part of the bin the disc reaches.
+  auto line_can_beat = [&](const Line& L, int b, double rho, double rho2) {
+    const double lo = smin_ + bin_ * b;
+    const double a0 = std::max(lo, s - rho), a1 = std::min(lo + bin_, s + rho);
+    if (a0 > a1) return false;
+    const double sp = std::clamp(s + L.k * rho, a0, a1), d = s - sp;
+    // line + sqrt(rho2 - d^2) > best, squared: no square root.
+    const double need = best - (L.a + L.b * (sp - lo - 0.5 * bin_));
+    return need < 0.0 || rho2 - d * d > need * need;
   };
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
@@ -225,7 +297,8 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     int pass[4096];
     int npass = 0;
     int b0 = 0, b1 = -1;
-    bins(std::sqrt(rm2), b0, b1);
+    const double rm = std::sqrt(rm2);
+    bins(rm, b0, b1);
     for (int cb = c0; cb <= c1; ++cb) {
       if (!coarse_can_beat(
               cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
@@ -235,7 +308,10 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
            b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
            npass < 4096;
            ++b)
-        pass[npass++] = b;
+        if (line_can_beat(
+                blockline_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)], b, rm,
+                rm2))
+          pass[npass++] = b;
     }
     if (npass == 0) return;
     for (long j = j0; j <= j1; ++j) {
@@ -246,9 +322,19 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
       for (int m = 0; m < npass; ++m) {
         const int b = pass[m];
         const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
-        if (!can_beat(b, binmax_[cell], rho2)) continue;
-        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k)
-          drop(items_[k], rho, rho2);
+        if (!can_beat(b, binmax_[cell], rho2) || !line_can_beat(line_[cell], b, rho, rho2))
+          continue;
+        for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
+          // The segment's box first: no point of it rises above top, nor lies nearer than dx
+          // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
+          const Seg& g = seg_[k];
+          const double need = best - std::max(g.z0, g.z1);
+          if (need >= 0.0) {
+            const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
+            if (rho2 - dx * dx <= need * need) continue;
+          }
+          drop(k, rho, rho2);
+        }
       }
     }
   };
@@ -319,73 +405,138 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
     cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
   for (std::size_t c = 0; c < ncell; ++c)
     e.start_[c + 1] += e.start_[c];
-  e.items_.resize(e.start_.back());
+  std::vector<std::uint32_t> items(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t k = 0; k < e.seg_.size(); ++k)
-    cells(e.seg_[k], [&](std::size_t c) { e.items_[fill[c]++] = static_cast<std::uint32_t>(k); });
+    cells(e.seg_[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
   // Highest level first in every cell (ties by index: deterministic).
   for (std::size_t c = 0; c < ncell; ++c)
-    std::sort(e.items_.begin() + e.start_[c], e.items_.begin() + e.start_[c + 1],
+    std::sort(items.begin() + e.start_[c], items.begin() + e.start_[c + 1],
               [&](std::uint32_t a, std::uint32_t b) {
                 return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
               });
+  // The segments themselves in that order, so a query reads a cell from one run of memory.
+  std::vector<Seg> inl(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k)
+    inl[k] = e.seg_[items[k]];
+  e.nseg_ = e.seg_.size();
+  e.seg_ = std::move(inl);
+  // The highest level of each cell in a small array of its own: most cells a query walks
+  // are ruled out by it without touching their segments.
+  e.cellmax_.assign(ncell, -kInf);
+  for (std::size_t c = 0; c < ncell; ++c)
+    if (e.start_[c] < e.start_[c + 1]) e.cellmax_[c] = e.seg_[e.start_[c]].z;
+  // And per square of kSuper x kSuper cells, so a query rules out most of the area around a
+  // flat stretch with a few tests.
+  e.nsx_ = (e.nx_ + kSuper - 1) / kSuper;
+  e.nsy_ = (e.ny_ + kSuper - 1) / kSuper;
+  e.supermax_.assign(static_cast<std::size_t>(e.nsx_) * static_cast<std::size_t>(e.nsy_), -kInf);
+  for (int j = 0; j < e.ny_; ++j)
+    for (int i = 0; i < e.nx_; ++i) {
+      double& m =
+          e.supermax_[static_cast<std::size_t>(j / kSuper) * static_cast<std::size_t>(e.nsx_) +
+                      static_cast<std::size_t>(i / kSuper)];
+      m = std::max(m, e.cellmax_[static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
+                                 static_cast<std::size_t>(i)]);
+    }
   return e;
 }
 
 std::size_t LevelEnvelope::memory_bytes() const {
-  return seg_.size() * sizeof(Seg) + (start_.size() + items_.size()) * sizeof(std::uint32_t);
+  return seg_.size() * sizeof(Seg) + start_.size() * sizeof(std::uint32_t) +
+         (cellmax_.size() + supermax_.size()) * sizeof(double);
 }
 
-double LevelEnvelope::centre_height(Vec2 p, double r, double best) const {
+double LevelEnvelope::drop_on(const Seg& g, Vec2 p, double r2) {
+  const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+  const double len2 = ex * ex + ey * ey;
+  double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+  const double d2 = qx * qx + qy * qy;
+  return d2 > r2 ? -kInf : g.z + std::sqrt(r2 - d2);
+}
+
+double LevelEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
+  return hint < seg_.size() ? drop_on(seg_[hint], p, r * r) : -kInf;
+}
+
+double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t* hint) const {
   if (seg_.empty() || !(r > 0.0)) return best;
+  std::uint32_t best_k = SliceEnvelope::kNoHint;
   const double r2 = r * r;
   const int i0 = std::max(0, static_cast<int>(std::floor((p.x - r - origin_.x) / cell_)));
   const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + r - origin_.x) / cell_)));
   const int j0 = std::max(0, static_cast<int>(std::floor((p.y - r - origin_.y) / cell_)));
   const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y + r - origin_.y) / cell_)));
-  for (int j = j0; j <= j1; ++j) {
-    const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
-    const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
-    for (int i = i0; i <= i1; ++i) {
-      const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
-      const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
-      const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
-      if (room < 0.0) continue;
-      const std::size_t c =
-          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
-      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-        const Seg& g = seg_[items_[k]];
-        const double need = best - g.z;
-        if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-        const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
-        const double len2 = ex * ex + ey * ey;
-        double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
-        t = std::clamp(t, 0.0, 1.0);
-        const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
-        const double d2 = qx * qx + qy * qy;
-        if (d2 > r2) continue;
-        best = std::max(best, g.z + std::sqrt(r2 - d2));
+  const double sc = cell_ * kSuper;
+  for (int sj = j0 / kSuper; sj <= j1 / kSuper; ++sj) {
+    const double sy0 = origin_.y + sj * sc;
+    const double sdy = std::max({sy0 - p.y, 0.0, p.y - sy0 - sc});
+    for (int si = i0 / kSuper; si <= i1 / kSuper; ++si) {
+      const double sx0 = origin_.x + si * sc;
+      const double sdx = std::max({sx0 - p.x, 0.0, p.x - sx0 - sc});
+      const double sroom = r2 - sdx * sdx - sdy * sdy;
+      if (sroom < 0.0) continue;
+      const double sneed =
+          best - supermax_[static_cast<std::size_t>(sj) * static_cast<std::size_t>(nsx_) +
+                           static_cast<std::size_t>(si)];
+      if (sneed >= 0.0 && sneed * sneed >= sroom) continue;
+      for (int j = std::max(j0, sj * kSuper); j <= std::min(j1, sj * kSuper + kSuper - 1); ++j) {
+        const double cy0 = origin_.y + j * cell_, cy1 = cy0 + cell_;
+        const double dy = std::max({cy0 - p.y, 0.0, p.y - cy1});
+        for (int i = std::max(i0, si * kSuper); i <= std::min(i1, si * kSuper + kSuper - 1); ++i) {
+          const double cx0 = origin_.x + i * cell_, cx1 = cx0 + cell_;
+          const double dx = std::max({cx0 - p.x, 0.0, p.x - cx1});
+          const double room = r2 - dx * dx - dy * dy;  // squared reach of the ball into the cell
+          if (room < 0.0) continue;
+          const std::size_t c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(i);
+          const double cneed = best - cellmax_[c];
+          if (cneed >= 0.0 && cneed * cneed >= room) continue;
+          for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+            const Seg& g = seg_[k];
+            const double need = best - g.z;
+            if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
+            const double h = drop_on(g, p, r2);
+            if (h > best) {
+              best = h;
+              best_k = k;
+            }
+          }
+        }
       }
     }
   }
+  if (hint != nullptr && best_k != SliceEnvelope::kNoHint) *hint = best_k;
   return best;
 }
 
-TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride) {
+TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride, int threads) {
   TriSliceTop t;
-  t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
-  t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
-  t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+  // The three indexes are independent: one task each (each writes only its own member).
+  parallel_for(3, threads, [&](std::size_t k) {
+    if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
+    if (k == 1) t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
+    if (k == 2) t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+  });
   return t;
 }
 
 double TriSliceTop::centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* hint) const {
   const SliceEnvelope& a = primary == Axis::kX ? x_ : y_;
   const SliceEnvelope& b = primary == Axis::kX ? y_ : x_;
-  std::uint32_t* ha = hint != nullptr ? &hint->primary : nullptr;
-  std::uint32_t* hb = hint != nullptr ? &hint->secondary : nullptr;
-  return z_.centre_height(p, r_mm,
-                          b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf, ha), hb));
+  if (hint == nullptr)
+    return z_.centre_height(p, r_mm, b.centre_height(p, r_mm, a.centre_height(p, r_mm, -kInf)));
+  // The three families' previous winners first: whichever family holds the point up, every
+  // search then starts from about the final height and prunes from its first bound.
+  const double seed =
+      std::max({a.hint_height(p, r_mm, hint->primary), b.hint_height(p, r_mm, hint->secondary),
+                z_.hint_height(p, r_mm, hint->level)});
+  return z_.centre_height(
+      p, r_mm,
+      b.centre_height(p, r_mm, a.centre_height(p, r_mm, seed, &hint->primary), &hint->secondary),
+      &hint->level);
 }
 
 }  // namespace swarf

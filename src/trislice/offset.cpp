@@ -1,7 +1,10 @@
 // seed 001 Eq. (1): convolutional offset of slice families.
 #include "swarf/trislice/offset.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <span>
 #include <string>
 
 #include "swarf/core/parallel.h"
@@ -55,6 +58,78 @@ PolygonSet convolve_slice(const SliceFamily& family, long level_index, double r_
     }
   }
   return intersect(std::span<const PolygonSet>(parts));
+}
+
+std::vector<PolygonSet> convolve_slices(const SliceFamily& family, long first_index,
+                                        std::size_t count, double r_mm,
+                                        const ConvolutionOptions& options, const Context& ctx) {
+  std::vector<PolygonSet> out(count);
+  const double r = std::fabs(r_mm);
+  const double ds = family.pitch_mm;
+  const long base = std::lround(family.first_level / ds);
+  const long nr = static_cast<long>(std::floor(r / ds + 1e-9));
+  const long n = static_cast<long>(family.size());
+  const long m = std::max(1, options.neighbour_stride);
+  const long K = nr / m;  // neighbours at distances k m, k = 0..K (as convolve_slice)
+  const bool grow = r_mm >= 0.0;
+  OffsetOptions oo;
+  oo.arc_tolerance_mm = options.arc_tolerance_mm;
+  // Windows of levels bound the cache: (window + 2 K m) slices x (K + 1) offsets.
+  const long window = 512;
+  for (long w0 = 0; w0 < static_cast<long>(count); w0 += window) {
+    const long w1 = std::min(static_cast<long>(count), w0 + window) - 1;
+    const long t0 = first_index - base + w0, t1 = first_index - base + w1;  // slice indices
+    // A level i is computed at all (shrinkage: every slice within r must exist).
+    auto live = [&](long i) { return grow || (i - nr >= 0 && i + nr < n); };
+    const long jlo = std::max(0L, t0 - K * m), jhi = std::min(n - 1, t1 + K * m);
+    if (jlo > jhi) continue;
+    const std::size_t nj = static_cast<std::size_t>(jhi - jlo + 1);
+    const std::size_t nk = static_cast<std::size_t>(K + 1);
+    std::vector<PolygonSet> cache(nj * nk);
+    parallel_for(nj, ctx.threads, [&](std::size_t q) {
+      if (ctx.cancelled()) return;
+      const long j = jlo + static_cast<long>(q);
+      const PolygonSet& s = family.slices[static_cast<std::size_t>(j)];
+      if (s.empty()) return;
+      for (long k = 0; k <= K; ++k) {
+        const long a = j - k * m, b = j + k * m;
+        if (!((a >= t0 && a <= t1 && live(a)) || (b >= t0 && b <= t1 && live(b)))) continue;
+        const double dz = static_cast<double>(k * m) * ds;
+        const double rho = std::sqrt(std::max(0.0, r * r - dz * dz));  // seed 001 Eq. (1)
+        cache[q * nk + static_cast<std::size_t>(k)] = offset(s, grow ? rho : -rho, oo);
+      }
+    });
+    auto at = [&](long j, long k) -> const PolygonSet& {
+      return cache[static_cast<std::size_t>(j - jlo) * nk + static_cast<std::size_t>(k)];
+    };
+    parallel_for(static_cast<std::size_t>(w1 - w0 + 1), ctx.threads, [&](std::size_t q) {
+      if (ctx.cancelled()) return;
+      const long i = t0 + static_cast<long>(q);
+      PolygonSet& res = out[static_cast<std::size_t>(w0) + q];
+      std::vector<PolygonSet> parts;
+      if (grow) {  // the same parts in the same order as convolve_slice
+        for (long j = i - K * m; j <= i + nr; j += m) {
+          if (j < 0 || j >= n || family.slices[static_cast<std::size_t>(j)].empty()) continue;
+          parts.push_back(at(j, std::labs(i - j) / m));
+        }
+        res = unite(std::span<const PolygonSet>(parts));
+        return;
+      }
+      if (!live(i)) return;
+      for (long k = 0; k <= nr; k += m) {
+        const long js[2] = {i - k, i + k};
+        for (int side = 0; side < (k == 0 ? 1 : 2); ++side) {
+          const long j = js[side];
+          if (family.slices[static_cast<std::size_t>(j)].empty()) return;
+          parts.push_back(at(j, k / m));
+          if (parts.back().empty()) return;
+        }
+      }
+      res = intersect(std::span<const PolygonSet>(parts));
+    });
+    if (ctx.cancelled()) return {};
+  }
+  return out;
 }
 
 Result<SliceFamily> offset_family(const SliceFamily& family, double r_mm,

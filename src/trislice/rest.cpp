@@ -52,21 +52,24 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     inflated.axis = fam.axis;
     inflated.pitch_mm = fam.pitch_mm;
     inflated.first_level = static_cast<double>(base + j0 - nr) * fam.pitch_mm;
-    inflated.slices.resize(static_cast<std::size_t>(j1 - j0 + 1 + 2 * nr));
-    parallel_for(inflated.slices.size(), ctx.threads, [&](std::size_t k) {
-      if (ctx.cancelled()) return;
-      inflated.slices[k] =
-          convolve_slice(fam, base + j0 - nr + static_cast<long>(k), o.tool_radius_mm, conv);
-    });
+    // Eq. (1) level by level (convolve_slices: each neighbour offset once for both levels
+    // that use it, the same result as convolve_slice per level).
+    inflated.slices =
+        convolve_slices(fam, base + j0 - nr, static_cast<std::size_t>(j1 - j0 + 1 + 2 * nr),
+                        o.tool_radius_mm, conv, ctx);
+    if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
     res.first_level = fam.level(static_cast<std::size_t>(j0));
+    // Shrink the inflated family back at the analysed slices' own levels.
+    std::vector<PolygonSet> closed =
+        convolve_slices(inflated, lattice_index(fam, static_cast<std::size_t>(j0)),
+                        static_cast<std::size_t>(j1 - j0 + 1), -o.tool_radius_mm, conv, ctx);
+    if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
     res.slices.resize(static_cast<std::size_t>(j1 - j0 + 1));
     parallel_for(res.slices.size(), ctx.threads, [&](std::size_t k) {
       if (ctx.cancelled()) return;
       const std::size_t j = static_cast<std::size_t>(j0) + k;
-      // Shrink the inflated family back at slice j's own level, then subtract the part.
-      const PolygonSet closed =
-          convolve_slice(inflated, lattice_index(fam, j), -o.tool_radius_mm, conv);
-      PolygonSet residue = subtract(closed, fam.slices[j]);
+      // Subtract the part.
+      PolygonSet residue = subtract(closed[k], fam.slices[j]);
       // Drop slivers thinner than min_thickness (an opening by half of it): the closing of a
       // concave arc of exactly the tool radius leaves micrometre films along the arc, which a
       // vertical thickness would count in full where the arc is steep.

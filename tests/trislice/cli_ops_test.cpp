@@ -40,7 +40,7 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   ASSERT_TRUE(write_stl(dir.file("dome.stl"), make_sphere({0, 0, 0}, 8.0, 96)).ok());
   const auto a =
       run_swarf("surface " + dir.file("dome.stl") +
-                " --tool ball:6 --pattern scan --stepover 1 --sampling 0.25 --pitch "
+                " --tool ball:6 --pattern scan --uniform --stepover 1 --sampling 0.25 --pitch "
                 "0.1 -o " +
                 dir.file("s.nc") + " --csv " + dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
@@ -62,6 +62,28 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   EXPECT_GT(static_cast<double>(close) / static_cast<double>(s.size()), 0.97);
   EXPECT_NE(slurp(dir.file("s.nc")).find("G1"), std::string::npos);
   EXPECT_NE(slurp(dir.file("rep/summary.json")).find("cl_points"), std::string::npos);
+  // Without --uniform the CL points are sampled adaptively: a subset of the uniform grid,
+  // each one equal to the uniform point at its x, y, and far fewer on a block's flat top.
+  ASSERT_TRUE(write_stl(dir.file("block.stl"), make_box({{0, 0, 0}, {20, 10, 5}})).ok());
+  const std::string block =
+      "surface " + dir.file("block.stl") +
+      " --tool ball:6 --pattern scan --stepover 1 --sampling 0.1 --pitch 0.1 ";
+  const auto u =
+      run_swarf(block + "--uniform -o " + dir.file("u.nc") + " --csv " + dir.file("u.csv"));
+  const auto c = run_swarf(block + "-o " + dir.file("a.nc") + " --csv " + dir.file("a.csv"));
+  ASSERT_EQ(u.status, 0) << u.out;
+  ASSERT_EQ(c.status, 0) << c.out;
+  const std::vector<Vec3> un = read_cl(slurp(dir.file("u.csv")));
+  const std::vector<Vec3> ad = read_cl(slurp(dir.file("a.csv")));
+  ASSERT_GT(ad.size(), 100u);
+  EXPECT_LT(ad.size(), un.size() / 2);
+  std::size_t k = 0;
+  for (const Vec3& q : ad) {
+    while (k < un.size() && (std::fabs(un[k].x - q.x) > 1e-9 || std::fabs(un[k].y - q.y) > 1e-9))
+      ++k;
+    ASSERT_LT(k, un.size()) << q.x << " " << q.y;
+    EXPECT_EQ(un[k].z, q.z);
+  }
 }
 
 TEST(TriSliceCli, RestWritesMapAndPointsAndRejectsFlatTools) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "swarf/dropcut/dropcut.h"
 #include "swarf/mesh/generate.h"
@@ -258,6 +259,102 @@ TEST(TriSlicePaths, ScanLinesIndependentOfThreadCount) {
   auto b = scan_cl_lines(top, model->bounds, 4.0, 0.0, p, many);
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_EQ(*a, *b);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Adaptive sampling along the scan lines against the uniform grid on the Table 2 part: the
+// adaptive path, linearly interpolated, is neither below a uniform CL point by more than the
+// tolerance (a gouge) nor above it (material left), from fewer queries (one per kept point;
+// the ring's curved flanks need the 0.1 mm spacing for 1 um, the plate does not).
+TEST(TriSlicePaths, AdaptiveScanStaysWithinToleranceOfTheUniformGrid) {
+  auto model = build_trislice(make_filleted_torus_part(), 0.125);
+  ASSERT_TRUE(model.ok());
+  const TriSliceTop top = TriSliceTop::build(*model);
+  ScanParams p;
+  p.stepover_mm = 0.5;
+  p.sampling_mm = 0.1;
+  p.adaptive = false;
+  auto uniform = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+  p.adaptive = true;
+  auto adaptive = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+  ASSERT_TRUE(uniform.ok() && adaptive.ok());
+  ASSERT_EQ(uniform->size(), adaptive->size());
+  std::size_t nu = 0, na = 0;
+  double below = 0.0, above = 0.0;
+  for (std::size_t i = 0; i < uniform->size(); ++i) {
+    const std::vector<Vec3>& u = (*uniform)[i];
+    const std::vector<Vec3>& a = (*adaptive)[i];
+    ASSERT_GE(a.size(), 2u);
+    nu += u.size();
+    na += a.size();
+    EXPECT_EQ(a.front(), u.front());
+    EXPECT_EQ(a.back(), u.back());
+    std::size_t k = 0;
+    for (const Vec3& q : u) {
+      while (k + 2 < a.size() && a[k + 1].x <= q.x)
+        ++k;
+      const double t = (q.x - a[k].x) / (a[k + 1].x - a[k].x);
+      ASSERT_GE(t, -1e-9);
+      ASSERT_LE(t, 1.0 + 1e-9);
+      const double z = a[k].z + t * (a[k + 1].z - a[k].z);
+      below = std::max(below, q.z - z);
+      above = std::max(above, z - q.z);
+    }
+  }
+  EXPECT_LE(below, p.adaptive_tolerance_mm + 1e-9);
+  EXPECT_LE(above, p.adaptive_tolerance_mm + 1e-9);
+  EXPECT_LT(static_cast<double>(na), 0.8 * static_cast<double>(nu)) << na << " of " << nu;
+  std::printf("adaptive: %zu of %zu queries, at most %.2f um below, %.2f um above\n", na, nu,
+              below * 1e3, above * 1e3);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Adaptive lines of any length (the last stretch of a line is not a power of two): strictly
+// increasing along the line, both ends kept, every point equal to the uniform grid's there.
+TEST(TriSlicePaths, AdaptiveLinesAreSubsetsOfTheUniformGridForAnyLength) {
+  const Mesh torus = make_torus({0, 0, 5}, 12, 5, 48, 24);
+  auto model = build_trislice(torus, 0.25);
+  ASSERT_TRUE(model.ok());
+  const TriSliceTop top = TriSliceTop::build(*model);
+  for (double sampling : {0.1, 0.13, 0.3, 0.7})
+    for (double width : {20.0, 20.3, 21.1}) {
+      ScanParams p;
+      p.stepover_mm = 3.0;
+      p.sampling_mm = sampling;
+      p.region = Box2{{-10.0, -10.0}, {-10.0 + width, 10.0}};
+      p.adaptive = false;
+      auto u = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      p.adaptive = true;
+      auto a = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      ASSERT_TRUE(u.ok() && a.ok());
+      ASSERT_EQ(u->size(), a->size());
+      for (std::size_t i = 0; i < u->size(); ++i) {
+        const std::vector<Vec3>&ul = (*u)[i], &al = (*a)[i];
+        ASSERT_FALSE(al.empty());
+        EXPECT_EQ(al.front(), ul.front());
+        EXPECT_EQ(al.back(), ul.back());
+        std::size_t k = 0;
+        for (std::size_t j = 0; j < al.size(); ++j) {
+          if (j > 0) {
+            EXPECT_GT(al[j].x, al[j - 1].x) << sampling << " " << width;
+          }
+          while (k < ul.size() && ul[k].x != al[j].x)
+            ++k;
+          ASSERT_LT(k, ul.size());
+          EXPECT_EQ(ul[k], al[j]);
+        }
+      }
+    }
 }
 
 }  // namespace

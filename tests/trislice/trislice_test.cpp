@@ -1,6 +1,7 @@
 // Tri-slice model, Eq. (1) offsets and the point-wise top envelope (seed 001 section 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarf/mesh/generate.h"
@@ -144,6 +145,128 @@ TEST(ConvolutionalOffset, EnvelopeEqualsTheTopOfTheInflatedSlice) {
           << "y " << k * 0.25 << " x " << x;
     }
   }
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// Brute force of Eq. (1) on one family at one point: every slice within r, every edge of it,
+// a disc of radius sqrt(r^2 - dq^2) dropped on the edge (its ends, and its interior where the
+// disc meets it along its normal). Downward edges are included: they can never be the first
+// contact, so they must not change the answer either.
+double brute_envelope(const SliceFamily& fam, Vec2 p, double r) {
+  const bool nx = fam.axis == Axis::kX;
+  const double q = nx ? p.x : p.y, s = nx ? p.y : p.x;
+  double best = -1e9;
+  for (std::size_t j = 0; j < fam.size(); ++j) {
+    const double dq = q - fam.level(j);
+    if (dq * dq > r * r) continue;
+    const double rho = std::sqrt(r * r - dq * dq);
+    for (const Ring& ring : fam.slices[j].rings)
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+        // (along, z) of the ends in the plane's coordinates.
+        const Vec2 u = nx ? a : Vec2{a.y, a.x}, v = nx ? b : Vec2{b.y, b.x};
+        for (const Vec2& e : {u, v})
+          if (std::fabs(s - e.x) <= rho)
+            best = std::max(best, e.y + std::sqrt(rho * rho - (s - e.x) * (s - e.x)));
+        const Vec2 d = v - u;
+        const double len = norm(d);
+        if (len <= 0.0) continue;
+        Vec2 n{-d.y / len, d.x / len};  // one of the normals; take the upward one
+        if (n.y < 0.0) n = n * -1.0;
+        if (n.y <= 0.0) continue;
+        const double qs = s - rho * n.x;
+        const double t = (qs - u.x) / d.x;
+        if (d.x != 0.0 && t >= 0.0 && t <= 1.0) best = std::max(best, u.y + t * d.y + rho * n.y);
+      }
+  }
+  return best;
+}
+
+// The pruning of SliceEnvelope (bins, block and slice upper lines, segment boxes, the hint)
+// must not change the answer: against brute force on the Table 2 part, at scattered points
+// and along a scan line (where the hint carries over).
+TEST(ConvolutionalOffset, EnvelopePruningEqualsBruteForce) {
+  auto model = build_trislice_families(make_filleted_torus_part(), 0.1, {true, true, false});
+  ASSERT_TRUE(model.ok());
+  for (Axis a : {Axis::kX, Axis::kY}) {
+    const SliceFamily& fam = model->family(a);
+    const SliceEnvelope env = SliceEnvelope::build(fam);
+    std::uint32_t hint = SliceEnvelope::kNoHint;
+    std::size_t n = 0;
+    for (double y = -39.0; y <= 39.0; y += 7.9)
+      for (double x = -41.0; x <= 41.0; x += 0.37) {
+        const Vec2 p{x, y};
+        const double brute = brute_envelope(fam, p, 4.0);
+        EXPECT_NEAR(env.centre_height(p, 4.0, -1e9, &hint), brute, 1e-9) << x << " " << y;
+        EXPECT_NEAR(env.centre_height(p, 4.0, -1e9), brute, 1e-9) << x << " " << y;
+        ++n;
+      }
+    EXPECT_GT(n, 2000u);
+  }
+}
+
+// The level index (cells, super-cells, highest level first) against every ring edge of every
+// xy slice: z_l + sqrt(r^2 - d^2) for the nearest point of the edge within r.
+TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
+  auto model = build_trislice_families(make_filleted_torus_part(), 0.25, {false, false, true});
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fam = model->family(Axis::kZ);
+  const LevelEnvelope env = LevelEnvelope::build(fam);
+  const double r = 4.0;
+  std::size_t n = 0;
+  for (double y = -43.0; y <= 43.0; y += 4.3)
+    for (double x = -43.0; x <= 43.0; x += 0.53) {
+      double brute = -1e9;
+      for (std::size_t j = 0; j < fam.size(); ++j)
+        for (const Ring& ring : fam.slices[j].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
+            const double len2 = dot(e, e);
+            const double t = len2 > 0 ? std::clamp(dot(Vec2{x, y} - a, e) / len2, 0.0, 1.0) : 0.0;
+            const double d2 = norm_sq(a + e * t - Vec2{x, y});
+            if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
+          }
+      EXPECT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
+      ++n;
+    }
+  EXPECT_GT(n, 3000u);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// convolve_slices (each neighbour offset once, shared by the two levels that use it) must
+// give convolve_slice's result at every level, inflating and shrinking, with a stride and
+// across the ends of the family.
+TEST(ConvolutionalOffset, SlicesInOneGoEqualSliceBySlice) {
+  const Mesh torus = make_torus({0, 0, 2}, 10, 4, 48, 24);
+  auto model = build_trislice_families(torus, 0.25, {false, true, false});
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fy = model->family(Axis::kY);
+  const long first = lattice_index(fy, 0) - 14;
+  const std::size_t count = fy.size() + 28;
+  for (int stride : {1, 3})
+    for (double r : {3.0, -1.5}) {
+      ConvolutionOptions co;
+      co.neighbour_stride = stride;
+      const std::vector<PolygonSet> all = convolve_slices(fy, first, count, r, co);
+      ASSERT_EQ(all.size(), count);
+      std::size_t nonempty = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        const PolygonSet one = convolve_slice(fy, first + static_cast<long>(k), r, co);
+        ASSERT_EQ(all[k].rings, one.rings) << "level " << k << " r " << r << " stride " << stride;
+        nonempty += !one.empty();
+      }
+      EXPECT_GT(nonempty, 20u);
+    }
 }
 
 }  // namespace

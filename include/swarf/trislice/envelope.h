@@ -41,30 +41,41 @@ class SliceEnvelope {
   /// and out; it only speeds the query up, the answer does not depend on it.
   double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
   static constexpr std::uint32_t kNoHint = 0xffffffffu;
+  /// The height that the hinted segment alone gives (-infinity for no hint): a lower bound.
+  double hint_height(Vec2 p, double r_mm, std::uint32_t hint) const;
 
-  std::size_t segment_count() const { return seg_.size(); }
+  std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
  private:
   struct Seg {
     double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
-    double ns, nz, slope;   ///< upward unit normal; dz/ds (nz == 0 marks a vertical edge)
+    double ns, nz;          ///< upward unit normal (nz == 0 marks a vertical edge)
   };
+  static double drop_on(const Seg& g, double s, double rho, double rho2);
   Axis axis_ = Axis::kY;
   double first_ = 0.0, pitch_ = 1.0;
   std::size_t n_ = 0;  ///< slices
   double smin_ = 0.0, bin_ = 1.0;
   int nb_ = 0;
-  std::vector<Seg> seg_;
-  std::vector<std::uint32_t> slice_of_;  ///< slice index of each segment
+  std::size_t nseg_ = 0;                 ///< upward edges (each copied into the bins it spans)
+  std::vector<Seg> seg_;                 ///< CSR items over (slice, bin), in place
+  std::vector<std::uint32_t> slice_of_;  ///< slice index of each item
   std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
-  std::vector<std::uint32_t> items_;
-  std::vector<double> binmax_;    ///< per (slice, bin)
+  std::vector<double> binmax_;           ///< per (slice, bin)
+  /// Per (slice, bin): a line z <= a + b (s - bin centre) above every upward edge in the bin,
+  /// and k = b / sqrt(1 + b^2) (where a disc's top over that line peaks). Much tighter than
+  /// binmax_ on a slope, so slices near the contact are ruled out before their segments.
+  struct Line {
+    double a, b, k;
+  };
+  std::vector<Line> line_;
+  std::vector<Line> blockline_;   ///< per (block of kBlock slices, bin), above all its lines
   int nbc_ = 0;                   ///< coarse bins
   std::vector<double> blockmax_;  ///< per (block of kBlock slices, coarse bin)
   std::vector<double> supermax_;  ///< per (super-block of kBlock^2 slices, coarse bin)
   static constexpr std::size_t kBlock = 16;
-  static constexpr std::size_t kCoarse = 2;  ///< fine bins per coarse bin
+  static constexpr std::size_t kCoarse = 1;  ///< fine bins per coarse bin
 };
 
 /// The xy family's share of the top: a ball centred over p at height zc touches the ring of
@@ -78,31 +89,43 @@ class SliceEnvelope {
 class LevelEnvelope {
  public:
   static LevelEnvelope build(const SliceFamily& xy_family, double cell_mm = 1.0, int stride = 1);
-  double centre_height(Vec2 p, double r_mm, double at_least) const;
-  std::size_t segment_count() const { return seg_.size(); }
+  /// `hint` as for SliceEnvelope: the ring edge that decided the previous query.
+  double centre_height(Vec2 p, double r_mm, double at_least, std::uint32_t* hint = nullptr) const;
+  double hint_height(Vec2 p, double r_mm, std::uint32_t hint) const;
+  std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
  private:
   struct Seg {
     double x0, y0, x1, y1, z;
   };
-  std::vector<Seg> seg_;
+  static double drop_on(const Seg& g, Vec2 p, double r2);
+  std::size_t nseg_ = 0;
+  std::vector<Seg> seg_;  ///< CSR items over the cells, in place, highest level first
   Vec2 origin_;
   double cell_ = 1.0;
   int nx_ = 0, ny_ = 0;
-  std::vector<std::uint32_t> start_, items_;
+  std::vector<std::uint32_t> start_;
+  std::vector<double> cellmax_;     ///< highest level per cell (-infinity when empty)
+  static constexpr int kSuper = 4;  ///< cells per side of a super-cell
+  int nsx_ = 0, nsy_ = 0;
+  std::vector<double> supermax_;  ///< highest level per super-cell
 };
 
 /// Per-scan-line state that speeds up consecutive queries (see SliceEnvelope::centre_height).
 struct ScanHint {
   std::uint32_t primary = SliceEnvelope::kNoHint;
   std::uint32_t secondary = SliceEnvelope::kNoHint;
+  std::uint32_t level = SliceEnvelope::kNoHint;
 };
 
 /// The three families of a model queried together (the xy family only when it was sliced).
 class TriSliceTop {
  public:
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1);
+  /// `threads`: the three families are indexed in parallel (0 = all cores); the index does
+  /// not depend on it.
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1,
+                           int threads = 0);
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,

@@ -42,6 +42,16 @@ struct ConvolutionOptions {
 PolygonSet convolve_slice(const SliceFamily& family, long level_index, double r_mm,
                           const ConvolutionOptions& options = {});
 
+/// convolve_slice at the `count` consecutive lattice levels from first_index on, equal to it
+/// level by level, with each neighbour offset computed once for all the levels that use it
+/// (slice j offset by sqrt(r^2 - (k ds)^2) serves the levels j - k and j + k: half the
+/// offsets). Parallel over slices, then over levels; independent of ctx.threads. An empty
+/// result when cancelled.
+std::vector<PolygonSet> convolve_slices(const SliceFamily& family, long first_index,
+                                        std::size_t count, double r_mm,
+                                        const ConvolutionOptions& options = {},
+                                        const Context& ctx = default_context());
+
 /// Lattice index of slice j of a family (level = index * pitch).
 long lattice_index(const SliceFamily& family, std::size_t j);
 

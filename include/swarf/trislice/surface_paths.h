@@ -23,6 +23,15 @@ struct ScanParams {
   bool zigzag = false;        ///< false: one-way (Table 1), every line in the + direction
   double stepover_mm = 0.25;  ///< radial depth of cut between lines (Table 1 finishing)
   double sampling_mm = 0.1;   ///< CL point spacing along a line before simplification
+  /// Adaptive sampling along the lines (as OpenCAMLib's AdaptivePathDropCutter): the CL
+  /// points lie on the sampling_mm lattice of the uniform grid, but only every
+  /// 2^k-th one (2^k * sampling <= adaptive_max_step_mm, 2^k >= 8) is evaluated first; a stretch is
+  /// halved, down to sampling_mm, while its evaluated midpoint leaves the chord by more than
+  /// adaptive_tolerance_mm. false: every lattice point (the uniform grid). See
+  /// docs/trislice.md for the argument and the test against the uniform grid.
+  bool adaptive = true;
+  double adaptive_max_step_mm = 1.6;
+  double adaptive_tolerance_mm = 0.001;  ///< vertical, mm; the gouge it may leave
   double stock_to_leave_mm = 0.0;
   Box2 region;                  ///< tool-axis area; empty: the model's xy bounds
   double tolerance_mm = 0.001;  ///< simplification of each line (chordal), 0 = keep all
@@ -47,6 +56,10 @@ struct RoughingParams {
   /// radius >= r + margin sags at most s^2 / (8 (r + margin)) (8 um at 0.5 mm, r = 4), far
   /// inside the margin. 0 = the scan's own sampling.
   double sampling_mm = 0.5;
+  /// Adaptive tolerance of the roughing lines when ScanParams::adaptive (vertical, mm): far
+  /// inside the margin, like the chord sag above.
+  double adaptive_tolerance_mm = 0.005;
+  double adaptive_max_step_mm = 8.0;  ///< first-pass CL spacing of the roughing lines
 };
 
 struct ContourParams {
@@ -68,7 +81,9 @@ Status validate(const ContourParams& p);
 
 /// CL lines (tool tips) of a scan at offset `extra_mm` above the part (stock to leave,
 /// margin, roughing layer): the tool centre is the top of the model inflated by r + extra.
-/// Lines in order, each in the + direction, points `sampling_mm` apart. Parallel per line.
+/// Lines in order, each in the + direction, points on the `sampling_mm` lattice: all of them,
+/// or with `adaptive` those that the refinement needs (always the two ends). Parallel per
+/// line; identical for any thread count.
 Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
                                                      double tool_radius_mm, double extra_mm,
                                                      const ScanParams& params,
