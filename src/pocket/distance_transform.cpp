@@ -98,17 +98,21 @@ std::vector<int> medial_axis(const std::vector<float>& squared_d, int width, int
                              double min_d) {
   std::vector<int> out;
   const double slack = 0.8;
+  const double reach[2] = {slack, slack * std::sqrt(2.0)};  // edge, diagonal neighbours
+  const double min_sq = min_d * min_d;
   for (int j = 1; j + 1 < height; ++j)
     for (int i = 1; i + 1 < width; ++i) {
       const std::size_t idx = static_cast<std::size_t>(j) * width + i;
-      const double dp = std::sqrt(static_cast<double>(squared_d[idx]));
-      if (dp < min_d || squared_d[idx] >= kInf) continue;
+      const double sq = static_cast<double>(squared_d[idx]);
+      if (sq < min_sq || squared_d[idx] >= kInf) continue;
+      const double dp = std::sqrt(sq);
+      // q swallows p when d(q) >= d(p) + slack |p - q|; compared squared (both sides >= 0).
       bool ridge = true;
       for (int dj = -1; dj <= 1 && ridge; ++dj)
         for (int di = -1; di <= 1; ++di) {
           if (di == 0 && dj == 0) continue;
-          const double dq = std::sqrt(static_cast<double>(squared_d[idx + dj * width + di]));
-          if (dq >= dp + slack * std::sqrt(static_cast<double>(di * di + dj * dj))) {
+          const double need = dp + reach[di != 0 && dj != 0 ? 1 : 0];
+          if (static_cast<double>(squared_d[idx + dj * width + di]) >= need * need) {
             ridge = false;
             break;
           }
