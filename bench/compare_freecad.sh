@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Swarf's adaptive pocket against FreeCAD's adaptive clearing (libarea Adaptive2d, the engine
+# of FreeCAD's Path/CAM Adaptive operation, Debian package freecad-python3, not a Swarf
+# dependency), on the benchmark pockets, both judged by the same independent sweep
+# (bench/pocket_sweep.cpp = tests/pocket/sweep_checker.cpp at 0.05 mm). Prints one table.
+#   bench/compare_freecad.sh [build-dir]     (default build/release)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build/release}
+swarf=$build/swarf
+sweep=$build/bench/swarf_pocket_sweep
+[ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
+python3 -c 'import sys; sys.path.append("/usr/lib/freecad-python3/lib"); import area' 2>/dev/null ||
+  { echo "needs FreeCAD: sudo apt-get install freecad-python3" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+python3 - "$tmp/star.json" <<'PY'
+import json, math, sys
+pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
+        (50 if k % 2 == 0 else 24) * math.sin(math.pi * k / 5 + math.pi / 2)] for k in range(10)]
+json.dump({"outer": pts, "islands": []}, open(sys.argv[1], "w"))
+PY
+cpu() { /usr/bin/time -f "%U %S" -o "$tmp/t" "$@" >/dev/null 2>&1; awk '{printf "%.3f", $1 + $2}' "$tmp/t"; }
+printf "| pocket | generator | CPU s | within +-20 %% (arc) | (removal) | max eng. deg | slot mm | machining s | residual mm^2 | gouge mm |\n"
+printf "|---|---|---|---|---|---|---|---|---|---|\n"
+row() {  # name generator cpu sweep-line
+  echo "$4" | awk -v n="$1" -v g="$2" -v c="$3" '{
+    gsub(/,/, ""); gsub(/\(/, ""); gsub(/\)/, "");
+    for (i = 1; i <= NF; i++) v[$i] = $(i + 1);
+    printf "| %s | %s | %s | %s %% | %s %% | %s | %s | %s | %s | %s |\n", n, g, c, v["within20"],
+           v["removal"], v["engagement"], v["slot"], v["machining"], v["residual"], v["gouge"] }'
+}
+for spec in "L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|10" \
+            "Kiri:Moto 40x40, D10|tests/data/pocket/kirimoto_pocket.json|10" \
+            "star R50/24, D10|$tmp/star.json|10" \
+            "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6"; do
+  IFS="|" read -r name file d <<<"$spec"
+  so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
+  target=$(awk -v d="$d" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
+  t=$(cpu "$swarf" pocket "$file" --tool "flat:$d" --stepover "$so" --depth 6 -o "$tmp/s.nc")
+  row "$name" "Swarf adaptive" "$t" "$("$sweep" "$file" "$d" "$target" "$tmp/s.nc")"
+  for fp in on off; do
+    flag=""; [ $fp = off ] && flag=--no-finishing-profile
+    line=$(python3 bench/freecad_adaptive.py "$file" "$d" 0.1 "$tmp/f.nc" $flag)
+    t=$(echo "$line" | sed -E 's/.*cpu ([0-9.]+) s.*/\1/')
+    row "$name" "FreeCAD Adaptive2d, finishing profile $fp" "$t" "$("$sweep" "$file" "$d" "$target" "$tmp/f.nc")"
+  done
+done

@@ -1,0 +1,58 @@
+// Judges any pocket G-code with the independent sweep of tests/pocket/sweep_checker.cpp:
+//   swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG PROGRAM.nc [SAMPLES.csv]
+// Prints one line of figures (gouge, residual, cutting length, engagement within +-20 % of
+// the target by contact arc and by removal, largest engagement, full-slot length). Used by
+// bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "../tests/pocket/sweep_checker.cpp"
+#include "swarf/gcode/gcode.h"
+#include "swarf/pocket/pocket_input.h"
+#include "swarf/toolpath/metrics.h"
+
+int main(int argc, char** argv) {
+  using namespace swarf;
+  if (argc != 5 && argc != 6) {
+    std::fprintf(stderr,
+                 "usage: swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_DEG PROGRAM.nc "
+                 "[SAMPLES.csv]\n");
+    return 2;
+  }
+  auto pocket = read_pocket(argv[1]);
+  if (!pocket.ok()) {
+    std::fprintf(stderr, "%s\n", pocket.status().to_string().c_str());
+    return 2;
+  }
+  auto program = read_gcode(argv[4]);
+  if (!program.ok()) {
+    std::fprintf(stderr, "%s\n", program.status().to_string().c_str());
+    return 2;
+  }
+  const double d = std::atof(argv[2]), target = std::atof(argv[3]);
+  std::vector<testing::SweepSample> samples;
+  const auto s =
+      testing::sweep_check(pocket->region, 0.5 * d, *program, target, 0.05, 0.2, &samples);
+  if (argc == 6) {
+    // x, y, path length, arc engagement (deg, -1 in the entry), distance to the walls.
+    std::FILE* f = std::fopen(argv[5], "w");
+    if (f == nullptr) {
+      std::fprintf(stderr, "%s: cannot write\n", argv[5]);
+      return 2;
+    }
+    std::fprintf(f, "x,y,ds,eng,wall\n");
+    for (const auto& q : samples)
+      std::fprintf(f, "%.3f,%.3f,%.4f,%.1f,%.3f\n", q.position.x, q.position.y, q.length_mm,
+                   q.engagement_deg, q.wall_distance_mm);
+    std::fclose(f);
+  }
+  const ToolpathMetrics m = compute_metrics(*program);
+  std::printf(
+      "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%), "
+      "max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d\n",
+      s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
+      100 * s.within_20pct_removal, s.max_engagement_deg, s.slot_length_mm, m.machining_time_s,
+      static_cast<int>(m.lift_offs));
+  return 0;
+}
