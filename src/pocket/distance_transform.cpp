@@ -112,7 +112,9 @@ std::vector<int> medial_axis(const std::vector<float>& squared_d, int width, int
         for (int di = -1; di <= 1; ++di) {
           if (di == 0 && dj == 0) continue;
           const double need = dp + reach[di != 0 && dj != 0 ? 1 : 0];
-          if (static_cast<double>(squared_d[idx + dj * width + di]) >= need * need) {
+          const std::ptrdiff_t q =
+              static_cast<std::ptrdiff_t>(idx) + static_cast<std::ptrdiff_t>(dj) * width + di;
+          if (static_cast<double>(squared_d[static_cast<std::size_t>(q)]) >= need * need) {
             ridge = false;
             break;
           }
