@@ -41,7 +41,11 @@ std::string fmt_g(int tenths) {
 
 class Reader {
  public:
-  Reader(std::string_view source, const GcodeReadOptions& options) : source_(source) {
+  Reader(std::string_view source, const GcodeReadOptions& options)
+      : source_(source),
+        work_offset_(options.work_offset),
+        g28_(options.g28_home),
+        g30_(options.g30_home) {
     pos_ = options.start;
     tp_.name = std::string(source);
     tp_.spindle_rpm = 0.0;  // unknown until an S word
@@ -287,11 +291,19 @@ class Reader {
       case 890:
         return error(fmt_g(g) + " (canned cycle) is not supported");
       case 280:
+      case 300:  // return to a stored position (non-modal, uses the axis words)
+        ++motion_words;
+        home_move_ = g / 10;
+        return {};
       case 281:
-      case 300:
+        g28_ = pos_ + work_offset_;
+        return {};
       case 301:
-      case 530:
-        return error(fmt_g(g) + " moves to machine or stored positions, unknown here");
+        g30_ = pos_ + work_offset_;
+        return {};
+      case 530:  // this block's axis words are machine coordinates
+        machine_coords_ = true;
+        return {};
       case 100:
       case 920:
       case 921:
@@ -310,6 +322,8 @@ class Reader {
     // RS-274/NGC order of execution: units, modes and feed before motion.
     int motion_words = 0;
     bool g80 = false;
+    home_move_ = 0;
+    machine_coords_ = false;
     for (int g : w.g) {
       SWARF_RETURN_IF_ERROR(modal_g(g, motion_words));
       g80 = g80 || g == 800;
@@ -339,6 +353,14 @@ class Reader {
     const bool has_axes = w['X'] || w['Y'] || w['Z'];
     const bool has_arc_words = w['I'] || w['J'] || w['K'] || w['R'];
     const bool dwell = std::find(w.g.begin(), w.g.end(), 40) != w.g.end();
+    if (home_move_ != 0) {
+      SWARF_RETURN_IF_ERROR(return_home(w));
+      ended_ = end;
+      return {};
+    }
+    if (machine_coords_ && (motion_ < 0 || motion_ > 1)) {
+      return error("G53 needs G0 or G1 active");
+    }
     if (has_axes && !dwell) {
       if (g80) return error("axis words with G80 (motion cancelled)");
       if (motion_ < 0) return error("axis words without a motion mode (G0, G1, G2 or G3)");
@@ -350,12 +372,48 @@ class Reader {
     return {};
   }
 
+  // G28 / G30: a rapid to the intermediate point given by the axis words (in the current
+  // distance mode; where the tool is when there are none), then a rapid of those axes (all
+  // three when none is given) to the stored position. As LinuxCNC does, checked by rs274.
+  Status return_home(Words& w) {
+    if (w['I'] || w['J'] || w['K'] || w['R']) return error("I, J, K or R word with G28/G30");
+    const Vec3 home = (home_move_ == 28 ? g28_ : g30_) - work_offset_;
+    static constexpr std::array<char, 3> kAxes{'X', 'Y', 'Z'};
+    Vec3 mid = pos_, end = home;
+    bool any = false;
+    for (int a = 0; a < 3; ++a) {
+      if (auto v = w[kAxes[static_cast<std::size_t>(a)]]) {
+        mid[a] = absolute_ ? *v * unit_ : pos_[a] + *v * unit_;
+        any = true;
+      }
+    }
+    if (any) {
+      for (int a = 0; a < 3; ++a)
+        if (!w[kAxes[static_cast<std::size_t>(a)]]) end[a] = mid[a];
+    }
+    push_rapid(mid);
+    push_rapid(end);
+    return {};
+  }
+
+  void push_rapid(Vec3 to) {
+    Move m;
+    m.kind = MoveKind::kRapid;
+    m.cutting = false;
+    m.end = to;
+    m.feed_mm_min = feed_;
+    tp_.moves.push_back(m);
+    pos_ = to;
+  }
+
   Status motion(Words& w) {
     Vec3 target = pos_;
     static constexpr std::array<char, 3> kAxes{'X', 'Y', 'Z'};
     for (int a = 0; a < 3; ++a) {
       if (auto v = w[kAxes[static_cast<std::size_t>(a)]]) {
-        target[a] = absolute_ ? *v * unit_ : pos_[a] + *v * unit_;
+        target[a] = machine_coords_ ? *v * unit_ - work_offset_[a]
+                    : absolute_     ? *v * unit_
+                                    : pos_[a] + *v * unit_;
       }
     }
     Move m;
@@ -435,6 +493,10 @@ class Reader {
   }
 
   std::string_view source_;
+  Vec3 work_offset_;             ///< machine coordinates of the program origin
+  Vec3 g28_, g30_;               ///< stored positions, machine coordinates
+  int home_move_ = 0;            ///< 28 or 30 in a block that returns home
+  bool machine_coords_ = false;  ///< G53 in this block
   int line_ = 0;
   Toolpath tp_;
   Vec3 pos_;

@@ -140,13 +140,50 @@ TEST(GcodeReader, HarmlessModalCodesAccepted) {
   EXPECT_EQ(p.moves.size(), 1u);
 }
 
+// Returns to stored positions and machine coordinates, as real posts write them (Fanuc
+// "G91 G28 Z0", "G53 G0 Z0"), worked out by hand with a work offset.
+TEST(GcodeReader, HomeReturnsAndMachineCoordinates) {
+  GcodeReadOptions o;
+  o.work_offset = {100.0, 50.0, -200.0};  // program origin in machine coordinates
+  o.g28_home = {0.0, 0.0, 0.0};           // machine home
+  o.g30_home = {10.0, 20.0, -5.0};
+  auto r = parse_gcode(
+      "G21 G90 G0 X1 Y2 Z3\n"
+      "G1 Z-4 F100\n"
+      "G91 G28 Z0\n"   // intermediate = here; then Z to home Z: machine 0 = program 200
+      "G90 G28 X5\n"   // X via 5 to home X (program -100); Y, Z stay
+      "G53 G0 Z-10\n"  // machine Z -10 = program 190
+      "G28.1\n"        // stores here (machine) as the G28 position
+      "G0 X0 Y0 Z0\n"
+      "G28\n"   // all axes back to the stored point
+      "G30\n",  // all axes to G30's position (program -90, -30, 195)
+      "home.nc", o);
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  const auto& m = r->moves;
+  ASSERT_EQ(m.size(), 12u);
+  EXPECT_EQ(m[2].end, (Vec3{1, 2, -4}));  // G91 G28 Z0: the intermediate point
+  EXPECT_EQ(m[3].end, (Vec3{1, 2, 200}));
+  EXPECT_EQ(m[4].end, (Vec3{5, 2, 200}));
+  EXPECT_EQ(m[5].end, (Vec3{-100, 2, 200}));
+  EXPECT_EQ(m[6].end, (Vec3{-100, 2, 190}));
+  EXPECT_EQ(m[7].end, (Vec3{0, 0, 0}));
+  EXPECT_EQ(m[8].end, (Vec3{0, 0, 0}));  // no axis words: the intermediate point is here
+  EXPECT_EQ(m[9].end, (Vec3{-100, 2, 190}));
+  EXPECT_EQ(m[10].end, (Vec3{-100, 2, 190}));
+  EXPECT_EQ(m[11].end, (Vec3{-90, -30, 195}));
+  for (std::size_t k = 2; k < m.size(); ++k)
+    EXPECT_EQ(m[k].kind, MoveKind::kRapid) << k;
+}
+
 TEST(GcodeReader, ErrorsNameSourceAndLine) {
   EXPECT_EQ(parse_error("G21\nG0 X0 Y0\nG2 X1 Y1 F100\n"), "prog.nc:3: G2 without I, J, K or R");
   EXPECT_NE(parse_error("G0 X0\nG41 D1 G1 X5 F100\n").find("prog.nc:2: G41 (cutter radius"),
             std::string::npos);
   EXPECT_NE(parse_error("G81 X1 Y1 Z-2 R1 F100\n").find(":1: G81 (canned cycle)"),
             std::string::npos);
-  EXPECT_NE(parse_error("G28\n").find("G28"), std::string::npos);
+  EXPECT_NE(parse_error("G0 X0\nG28 G0 X1\n").find(":2: two motion G-codes"), std::string::npos);
+  EXPECT_NE(parse_error("G0 X0\nG2 X2 I1 F10\nG53 X5\n").find(":3: G53 needs G0 or G1"),
+            std::string::npos);
   EXPECT_NE(parse_error("G92 X0\n").find("G92"), std::string::npos);
   EXPECT_NE(parse_error("G5 X1\n").find("unsupported G-code G5"), std::string::npos);
   EXPECT_NE(parse_error("G0 X0\nG1 X10\n").find(":2: G1 without a feed rate"), std::string::npos);

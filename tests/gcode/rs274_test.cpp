@@ -213,6 +213,24 @@ TEST_F(Rs274, ReaderSemanticsMatchLinuxCnc) {
       "reader.ngc");
 }
 
+TEST_F(Rs274, HomeReturnsAndMachineCoordinatesMatchLinuxCnc) {
+  // LinuxCNC's defaults: G54 offset 0 and stored G28/G30 positions 0 (our defaults too).
+  expect_accepted_and_same_motion(
+      "G21 G90 G17 G0 X10 Y5 Z2\n"
+      "G1 Z-3 F200\n"
+      "G91 G28 Z0\n"
+      "G90 G28 X4 Y3\n"
+      "G0 X7 Y8 Z9\n"
+      "G53 G0 Z20\n"
+      "G53 G1 X1 Y1 F300\n"
+      "G28.1\n"
+      "G0 X0 Y0 Z5\n"
+      "G28\n"
+      "G30 Z12\n"
+      "M2\n",
+      "home.ngc");
+}
+
 TEST_F(Rs274, HandWrittenDataFileMatchesLinuxCnc) {
   std::ifstream in(SWARF_TEST_DATA_DIR "/gcode/rounded_rectangle.ngc");
   std::stringstream text;

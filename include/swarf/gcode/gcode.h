@@ -39,10 +39,18 @@ std::string write_gcode(const Toolpath& path, const GcodeOptions& options);
 struct GcodeReadOptions {
   /// Where the machine is before the first block, mm.
   Vec3 start{0.0, 0.0, 0.0};
+  /// Machine coordinates of the program origin (the active work offset, G54): G53 blocks
+  /// give machine coordinates. LinuxCNC's default is 0 (machine = program coordinates).
+  Vec3 work_offset{0.0, 0.0, 0.0};
+  /// The positions G28 and G30 return to, in machine coordinates (LinuxCNC parameters
+  /// 5161-5163 and 5181-5183, 0 by default); G28.1 / G30.1 in the program overwrite them.
+  Vec3 g28_home{0.0, 0.0, 0.0};
+  Vec3 g30_home{0.0, 0.0, 0.0};
 };
 
 /// Parses a program in any of the dialects above (G0 G1 G2 G3 with I/J/K or R, G17-G19,
-/// G20/G21, G90/G91, F S T M words, comments, N-words, O-numbers, %). Errors name the
+/// G20/G21, G90/G91, G28/G30 returns and G28.1/G30.1, G53 machine-coordinate moves, F S T M
+/// words, comments, N-words, O-numbers, %). Errors name the
 /// source and the line: "prog.nc:12: G2 without I, J, K or R".
 Result<Toolpath> parse_gcode(std::string_view text, std::string_view source_name,
                              const GcodeReadOptions& options = {});
