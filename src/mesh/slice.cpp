@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include "polygon/polygon_detail.h"
@@ -64,14 +65,55 @@ std::vector<double> slice_levels(double from, double to, double pitch) {
 
 namespace {
 
-// The mesh prepared once for all levels of a call: undirected edge ids per triangle corner,
-// each triangle's corners along the axis, and for every level the list of triangles that it
-// cuts (min < level <= max), so that a level visits exactly the triangles it cuts.
+// Undirected edge ids per triangle corner: the same for every axis, so built once per call.
+struct MeshEdges {
+  explicit MeshEdges(const Mesh& mesh);
+  std::vector<std::array<std::uint32_t, 3>> tri_edges;  ///< edge id of corner k -> k+1
+  std::vector<std::array<std::uint32_t, 2>> edge_ends;  ///< vertex indices, lower first
+};
+
+MeshEdges::MeshEdges(const Mesh& mesh) {
+  // One sort of (undirected edge key, corner slot): equal keys are adjacent, so edge ids are
+  // handed out in key order without searching for each corner.
+  const std::size_t n = mesh.size();
+  struct Key {
+    std::uint64_t key;
+    std::uint32_t slot;
+  };
+  std::vector<Key> keys;
+  keys.reserve(3 * n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t a = tri[k], b = tri[(k + 1) % 3];
+      keys.push_back(
+          {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + k)});
+    }
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return a.key != b.key ? a.key < b.key : a.slot < b.slot;
+  });
+  tri_edges.resize(n);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (i == 0 || keys[i].key != keys[i - 1].key)
+      edge_ends.push_back({static_cast<std::uint32_t>(keys[i].key >> 32),
+                           static_cast<std::uint32_t>(keys[i].key & 0xffffffffu)});
+    tri_edges[keys[i].slot / 3][keys[i].slot % 3] =
+        static_cast<std::uint32_t>(edge_ends.size() - 1);
+  }
+}
+
+// The mesh prepared once for all levels of one axis: each triangle's corners along the axis,
+// and for every level the list of triangles that it cuts (min < level <= max), so that a
+// level visits exactly the triangles it cuts.
 class Slicer {
  public:
-  Slicer(const Mesh& mesh, Axis axis, const std::vector<double>& levels)
-      : mesh_(mesh), axis_(static_cast<int>(axis)), plane_(axis) {
-    build_edges();
+  Slicer(const Mesh& mesh, const MeshEdges& edges, Axis axis, const std::vector<double>& levels)
+      : mesh_(mesh),
+        tri_edges_(edges.tri_edges),
+        edge_ends_(edges.edge_ends),
+        axis_(static_cast<int>(axis)),
+        plane_(axis) {
     build_level_lists(levels);
   }
 
@@ -83,57 +125,25 @@ class Slicer {
     std::uint32_t to;    ///< edge id where it ends
   };
 
-  void build_edges();
   void build_level_lists(const std::vector<double>& levels);
   Vec2 edge_point(std::uint32_t edge, double level) const;
 
   const Mesh& mesh_;
+  const std::vector<std::array<std::uint32_t, 3>>& tri_edges_;
+  const std::vector<std::array<std::uint32_t, 2>>& edge_ends_;
   int axis_;
   Axis plane_;
-  std::vector<std::array<std::uint32_t, 3>> tri_edges_;  ///< edge id of corner k -> k+1
-  std::vector<std::array<std::uint32_t, 2>> edge_ends_;  ///< vertex indices, lower first
-  std::vector<std::array<double, 3>> tri_c_;             ///< corner coordinates along the axis
-  std::vector<std::uint32_t> level_start_;               ///< CSR: level i -> its triangles
-  std::vector<std::uint32_t> level_tris_;                ///< ascending within each level
+  std::vector<std::array<double, 3>> tri_c_;  ///< corner coordinates along the axis
+  std::vector<std::uint32_t> level_start_;    ///< CSR: level i -> its triangles
+  std::vector<std::uint32_t> level_tris_;     ///< ascending within each level
 };
-
-void Slicer::build_edges() {
-  // One sort of (undirected edge key, corner slot): equal keys are adjacent, so edge ids are
-  // handed out in key order without searching for each corner.
-  const std::size_t n = mesh_.size();
-  struct Key {
-    std::uint64_t key;
-    std::uint32_t slot;
-  };
-  std::vector<Key> keys;
-  keys.reserve(3 * n);
-  for (std::size_t t = 0; t < n; ++t) {
-    const auto& tri = mesh_.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const std::uint64_t a = tri[k], b = tri[(k + 1) % 3];
-      keys.push_back(
-          {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + k)});
-    }
-  }
-  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-    return a.key != b.key ? a.key < b.key : a.slot < b.slot;
-  });
-  tri_edges_.resize(n);
-  edge_ends_.clear();
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (i == 0 || keys[i].key != keys[i - 1].key)
-      edge_ends_.push_back({static_cast<std::uint32_t>(keys[i].key >> 32),
-                            static_cast<std::uint32_t>(keys[i].key & 0xffffffffu)});
-    tri_edges_[keys[i].slot / 3][keys[i].slot % 3] =
-        static_cast<std::uint32_t>(edge_ends_.size() - 1);
-  }
-}
 
 void Slicer::build_level_lists(const std::vector<double>& levels) {
   const std::size_t n = mesh_.size();
-  tri_c_.resize(n);
+  tri_c_.reserve(n);
   for (std::size_t t = 0; t < n; ++t)
-    tri_c_[t] = {mesh_.corner(t, 0)[axis_], mesh_.corner(t, 1)[axis_], mesh_.corner(t, 2)[axis_]};
+    tri_c_.push_back(
+        {mesh_.corner(t, 0)[axis_], mesh_.corner(t, 1)[axis_], mesh_.corner(t, 2)[axis_]});
   // Finite levels sorted (with their indices), so that the levels a triangle cuts,
   // min < level <= max, are one run found by two binary searches.
   std::vector<std::pair<double, std::uint32_t>> sorted;
@@ -326,13 +336,38 @@ PolygonSet Slicer::slice(std::size_t level_index, double level, const SliceOptio
 
 std::vector<PolygonSet> slice_mesh(const Mesh& mesh, Axis axis, const std::vector<double>& levels,
                                    const SliceOptions& options, const Context& ctx) {
-  std::vector<PolygonSet> out(levels.size());
-  if (mesh.empty() || levels.empty()) return out;
+  std::array<std::vector<double>, 3> all;
+  all[static_cast<std::size_t>(axis)] = levels;
+  auto out = slice_mesh_axes(mesh, all, options, ctx);
+  return std::move(out[static_cast<std::size_t>(axis)]);
+}
+
+std::array<std::vector<PolygonSet>, 3> slice_mesh_axes(
+    const Mesh& mesh, const std::array<std::vector<double>, 3>& levels, const SliceOptions& options,
+    const Context& ctx) {
+  std::array<std::vector<PolygonSet>, 3> out;
+  std::size_t total = 0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    out[a].resize(levels[a].size());
+    total += levels[a].size();
+  }
+  if (mesh.empty() || total == 0) return out;
   ctx.report("slice", 0.0);
-  const Slicer slicer(mesh, axis, levels);
-  parallel_for(levels.size(), ctx.threads, [&](std::size_t i) {
+  const MeshEdges edges(mesh);
+  std::vector<std::unique_ptr<Slicer>> slicers(3);
+  parallel_for(3, ctx.threads, [&](std::size_t a) {
+    if (!levels[a].empty())
+      slicers[a] = std::make_unique<Slicer>(mesh, edges, static_cast<Axis>(a), levels[a]);
+  });
+  // One loop over the levels of all axes: no serial step between the families.
+  parallel_for(total, ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;  // the caller checks ctx after a cancelled run
-    out[i] = slicer.slice(i, levels[i], options);
+    std::size_t a = 0;
+    while (i >= levels[a].size()) {
+      i -= levels[a].size();
+      ++a;
+    }
+    out[a][i] = slicers[a]->slice(i, levels[a][i], options);
   });
   ctx.report("slice", 1.0);
   return out;
