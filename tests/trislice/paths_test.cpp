@@ -171,6 +171,38 @@ TEST(TriSlicePaths, RoughingLayersFollowTable1) {
   EXPECT_FALSE(scan_finishing(*model, top, flat_mill(8), p).ok());
 }
 
+// On a fine model roughing reads every 5th slice (min_pitch 0.25 mm): the margin is kept
+// against the exact drop-cutter up to that pitch's error (28 um at the worst crease of this
+// part for r = 4, offset.h), and the path is that of a model sliced at 0.25 mm.
+TEST(TriSlicePaths, RoughingOnAFineModelReadsACoarserOneAndKeepsTheMargin) {
+  const Mesh part = make_filleted_torus_part();
+  auto fine = build_trislice(part, 0.05);
+  auto coarse = build_trislice(part, 0.25);
+  ASSERT_TRUE(fine.ok() && coarse.ok());
+  ScanParams p;
+  RoughingParams rough;  // Table 1
+  rough.stock_top_mm = 20.0;
+  auto tp = scan_roughing(*fine, TriSliceTop::build(*fine), ball8(), p, rough);
+  auto tc = scan_roughing(*coarse, TriSliceTop::build(*coarse), ball8(), p, rough);
+  ASSERT_TRUE(tp.ok() && tc.ok());
+  ASSERT_EQ(tp->moves.size(), tc->moves.size());
+  for (std::size_t i = 0; i < tp->moves.size(); ++i)
+    EXPECT_NEAR(tp->moves[i].end.z, tc->moves[i].end.z, 1e-9);
+  const double eps = 0.03, R = 4.1;
+  auto dc = DropCutter::build(part, CutterShape{R - eps, R - eps});
+  ASSERT_TRUE(dc.ok());
+  std::size_t n = 0;
+  for (const Move& m : tp->moves) {
+    if (m.kind != MoveKind::kFeed) continue;
+    const DropResult d = dc->drop(m.end.xy());
+    if (d.hit() && m.end.z < 20.0 - 1e-9) {  // at the stock top it cuts nothing
+      EXPECT_GE(m.end.z + 4.0, d.tip_z + R - eps - 1e-9) << m.end.x << " " << m.end.y;
+    }
+    ++n;
+  }
+  EXPECT_GT(n, 1000u);
+}
+
 TEST(TriSlicePaths, ContourRingsTouchButDoNotCutThePart) {
   const Mesh sphere = make_sphere({0, 0, 0}, 10, 128);
   auto model = build_trislice(sphere, 0.2);
