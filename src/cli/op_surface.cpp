@@ -85,8 +85,12 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   sp.adaptive = !p["uniform"].get<bool>();
   sp.adaptive_max_step_mm = p["max_step"].get<double>();
   sp.adaptive_tolerance_mm = p["adaptive_tolerance"].get<double>();
+  sp.adaptive_model_fraction = p["adaptive_model_fraction"].get<double>();
   sp.feed_mm_min = feed;
   sp.plunge_feed_mm_min = plunge;
+  if (sp.adaptive)
+    out.summary["adaptive_tolerance_mm"] =
+        effective_adaptive_tolerance_mm(sp, model->pitch_mm, tool.radius() + sp.stock_to_leave_mm);
   const auto t1 = std::chrono::steady_clock::now();
   const TriSliceTop top = TriSliceTop::build(*model, 0.5, 1, ctx.threads);
   const int layers = p["rough_layers"].get<int>();
@@ -137,6 +141,9 @@ const OperationRegistrar kRegister{Operation{
         {"max_step", ParamType::kNumber, 1.6, "adaptive: first-pass CL spacing, mm"},
         {"adaptive_tolerance", ParamType::kNumber, 0.001,
          "adaptive: refine while a midpoint leaves the chord by more, mm"},
+        {"adaptive_model_fraction", ParamType::kNumber, 1.0,
+         "adaptive: raise the tolerance to this fraction of the model's error bound at the pitch "
+         "(3 sqrt(3) pitch^2 / (16 r)); 0 = off"},
         {"pitch", ParamType::kNumber, 0.05, "slice pitch of the tri-slice model, mm"},
         {"stock_to_leave", ParamType::kNumber, 0.0, "material left on the part, mm"},
         {"rough_layers", ParamType::kInteger, 0, "roughing layers before finishing (Table 1: 5)"},

@@ -10,9 +10,12 @@
 #include "swarf/mesh/slice.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <utility>
 
 #include "polygon/polygon_detail.h"
 #include "swarf/core/parallel.h"
@@ -62,121 +65,121 @@ std::vector<double> slice_levels(double from, double to, double pitch) {
 
 namespace {
 
-// The mesh prepared once for all levels: undirected edge ids per triangle corner, the extent
-// of each triangle along the axis, and buckets of triangles along the axis so that a level
-// visits only triangles near it.
+// Undirected edge ids per triangle corner: the same for every axis, so built once per call.
+struct MeshEdges {
+  explicit MeshEdges(const Mesh& mesh);
+  std::vector<std::array<std::uint32_t, 3>> tri_edges;  ///< edge id of corner k -> k+1
+  std::vector<std::array<std::uint32_t, 2>> edge_ends;  ///< vertex indices, lower first
+};
+
+MeshEdges::MeshEdges(const Mesh& mesh) {
+  // One sort of (undirected edge key, corner slot): equal keys are adjacent, so edge ids are
+  // handed out in key order without searching for each corner.
+  const std::size_t n = mesh.size();
+  struct Key {
+    std::uint64_t key;
+    std::uint32_t slot;
+  };
+  std::vector<Key> keys;
+  keys.reserve(3 * n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t a = tri[k], b = tri[(k + 1) % 3];
+      keys.push_back(
+          {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + k)});
+    }
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return a.key != b.key ? a.key < b.key : a.slot < b.slot;
+  });
+  tri_edges.resize(n);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (i == 0 || keys[i].key != keys[i - 1].key)
+      edge_ends.push_back({static_cast<std::uint32_t>(keys[i].key >> 32),
+                           static_cast<std::uint32_t>(keys[i].key & 0xffffffffu)});
+    tri_edges[keys[i].slot / 3][keys[i].slot % 3] =
+        static_cast<std::uint32_t>(edge_ends.size() - 1);
+  }
+}
+
+// The mesh prepared once for all levels of one axis: each triangle's corners along the axis,
+// and for every level the list of triangles that it cuts (min < level <= max), so that a
+// level visits exactly the triangles it cuts.
 class Slicer {
  public:
-  Slicer(const Mesh& mesh, Axis axis) : mesh_(mesh), axis_(static_cast<int>(axis)), plane_(axis) {
-    build_edges();
-    build_buckets();
+  Slicer(const Mesh& mesh, const MeshEdges& edges, Axis axis, const std::vector<double>& levels)
+      : mesh_(mesh),
+        tri_edges_(edges.tri_edges),
+        edge_ends_(edges.edge_ends),
+        axis_(static_cast<int>(axis)),
+        plane_(axis) {
+    build_level_lists(levels);
   }
 
-  PolygonSet slice(double level, const SliceOptions& options) const;
+  PolygonSet slice(std::size_t level_index, double level, const SliceOptions& options) const;
 
  private:
   struct Segment {
     std::uint32_t from;  ///< edge id where the segment starts
     std::uint32_t to;    ///< edge id where it ends
   };
-  /// A triangle in a bucket with its corner coordinates along the axis, copied so that the
-  /// scan over a bucket reads memory in order instead of chasing vertex indices.
-  struct Entry {
-    double c[3];
-    std::uint32_t tri;
-  };
 
-  void build_edges();
-  void build_buckets();
+  void build_level_lists(const std::vector<double>& levels);
   Vec2 edge_point(std::uint32_t edge, double level) const;
 
   const Mesh& mesh_;
+  const std::vector<std::array<std::uint32_t, 3>>& tri_edges_;
+  const std::vector<std::array<std::uint32_t, 2>>& edge_ends_;
   int axis_;
   Axis plane_;
-  std::vector<std::array<std::uint32_t, 3>> tri_edges_;  ///< edge id of corner k -> k+1
-  std::vector<std::array<std::uint32_t, 2>> edge_ends_;  ///< vertex indices, lower first
-  double lo_ = 0.0, hi_ = 0.0, width_ = 1.0;             ///< axis range of the mesh, bucket width
-  std::vector<std::uint32_t> bucket_start_;
-  std::vector<Entry> bucket_entries_;
+  std::vector<std::array<double, 3>> tri_c_;  ///< corner coordinates along the axis
+  std::vector<std::uint32_t> level_start_;    ///< CSR: level i -> its triangles
+  std::vector<std::uint32_t> level_tris_;     ///< ascending within each level
 };
 
-void Slicer::build_edges() {
+void Slicer::build_level_lists(const std::vector<double>& levels) {
   const std::size_t n = mesh_.size();
-  std::vector<std::uint64_t> keys;
-  keys.reserve(3 * n);
-  for (const auto& t : mesh_.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint64_t a = t[k], b = t[(k + 1) % 3];
-      keys.push_back(std::min(a, b) << 32 | std::max(a, b));
-    }
-  std::vector<std::uint64_t> unique = keys;
-  std::sort(unique.begin(), unique.end());
-  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-  edge_ends_.resize(unique.size());
-  for (std::size_t e = 0; e < unique.size(); ++e)
-    edge_ends_[e] = {static_cast<std::uint32_t>(unique[e] >> 32),
-                     static_cast<std::uint32_t>(unique[e] & 0xffffffffu)};
-  tri_edges_.resize(n);
+  tri_c_.reserve(n);
   for (std::size_t t = 0; t < n; ++t)
-    for (int k = 0; k < 3; ++k)
-      tri_edges_[t][k] = static_cast<std::uint32_t>(
-          std::lower_bound(unique.begin(), unique.end(), keys[3 * t + k]) - unique.begin());
-}
-
-void Slicer::build_buckets() {
-  const std::size_t n = mesh_.size();
-  std::vector<double> tri_min(n), tri_max(n);
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, extent_sum = 0.0;
+    tri_c_.push_back(
+        {mesh_.corner(t, 0)[axis_], mesh_.corner(t, 1)[axis_], mesh_.corner(t, 2)[axis_]});
+  // Finite levels sorted (with their indices), so that the levels a triangle cuts,
+  // min < level <= max, are one run found by two binary searches.
+  std::vector<std::pair<double, std::uint32_t>> sorted;
+  sorted.reserve(levels.size());
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    if (std::isfinite(levels[i])) sorted.push_back({levels[i], static_cast<std::uint32_t>(i)});
+  std::sort(sorted.begin(), sorted.end());
+  auto run = [&](std::size_t t, std::size_t& r0, std::size_t& r1) {
+    const auto& c = tri_c_[t];
+    const double lo = std::min({c[0], c[1], c[2]}), hi = std::max({c[0], c[1], c[2]});
+    const auto first_above = [&](double v) {
+      return static_cast<std::size_t>(
+          std::upper_bound(
+              sorted.begin(), sorted.end(), v,
+              [](double x, const std::pair<double, std::uint32_t>& l) { return x < l.first; }) -
+          sorted.begin());
+    };
+    r0 = first_above(lo);
+    r1 = lo < hi ? first_above(hi) : r0;
+  };
+  level_start_.assign(levels.size() + 1, 0);
   for (std::size_t t = 0; t < n; ++t) {
-    const double a = mesh_.corner(t, 0)[axis_], b = mesh_.corner(t, 1)[axis_],
-                 c = mesh_.corner(t, 2)[axis_];
-    tri_min[t] = std::min({a, b, c});
-    tri_max[t] = std::max({a, b, c});
-    lo = std::min(lo, tri_min[t]);
-    hi = std::max(hi, tri_max[t]);
-    extent_sum += tri_max[t] - tri_min[t];
+    std::size_t r0 = 0, r1 = 0;
+    run(t, r0, r1);
+    for (std::size_t r = r0; r < r1; ++r)
+      ++level_start_[sorted[r].second + 1];
   }
-  if (n == 0 || !(hi > lo)) {  // empty or flat mesh: no level cuts it
-    bucket_start_ = {0, 0};
-    lo_ = 0.0;
-    width_ = 1.0;
-    return;
-  }
-  lo_ = lo;
-  hi_ = hi;
-  // Buckets about as wide as a typical triangle is tall: a level then visits roughly twice
-  // the triangles it cuts, and each triangle sits in about two buckets. Widen when tall
-  // triangles would make the table large.
-  const double range = hi - lo;
-  width_ = std::max({extent_sum / static_cast<double>(n), range / 1e6, range * 1e-12});
-  std::size_t buckets = 0, entries = 0;
-  for (;;) {
-    buckets = static_cast<std::size_t>(range / width_) + 1;
-    entries = 0;
-    for (std::size_t t = 0; t < n; ++t)
-      entries += static_cast<std::size_t>((tri_max[t] - lo) / width_) -
-                 static_cast<std::size_t>((tri_min[t] - lo) / width_) + 1;
-    if (entries <= 8 * n + buckets || buckets <= 1) break;
-    width_ *= 2.0;
-  }
-  bucket_start_.assign(buckets + 1, 0);
-  for (std::size_t t = 0; t < n; ++t) {
-    const auto b0 = static_cast<std::size_t>((tri_min[t] - lo) / width_);
-    const auto b1 = static_cast<std::size_t>((tri_max[t] - lo) / width_);
-    for (std::size_t b = b0; b <= b1; ++b)
-      ++bucket_start_[b + 1];
-  }
-  for (std::size_t b = 0; b < buckets; ++b)
-    bucket_start_[b + 1] += bucket_start_[b];
-  bucket_entries_.resize(entries);
-  std::vector<std::uint32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
-  for (std::size_t t = 0; t < n; ++t) {  // ascending triangle order within each bucket
-    const auto b0 = static_cast<std::size_t>((tri_min[t] - lo) / width_);
-    const auto b1 = static_cast<std::size_t>((tri_max[t] - lo) / width_);
-    const Entry e{{mesh_.corner(t, 0)[axis_], mesh_.corner(t, 1)[axis_], mesh_.corner(t, 2)[axis_]},
-                  static_cast<std::uint32_t>(t)};
-    for (std::size_t b = b0; b <= b1; ++b)
-      bucket_entries_[fill[b]++] = e;
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    level_start_[i + 1] += level_start_[i];
+  level_tris_.resize(level_start_.back());
+  std::vector<std::uint32_t> fill(level_start_.begin(), level_start_.end() - 1);
+  for (std::size_t t = 0; t < n; ++t) {  // ascending triangle order within each level
+    std::size_t r0 = 0, r1 = 0;
+    run(t, r0, r1);
+    for (std::size_t r = r0; r < r1; ++r)
+      level_tris_[fill[sorted[r].second]++] = static_cast<std::uint32_t>(t);
   }
 }
 
@@ -191,23 +194,37 @@ Vec2 Slicer::edge_point(std::uint32_t edge, double level) const {
   return to_plane(a + (b - a) * t, plane_);
 }
 
-PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
-  // A triangle is cut when min < level <= max, so nothing is cut outside (lo, hi]; checking
-  // that first also keeps the bucket index below from overflowing.
-  if (!std::isfinite(level) || bucket_start_.size() < 2 || level <= lo_ || level > hi_) return {};
-  const auto bucket = static_cast<std::size_t>((level - lo_) / width_);
-  if (bucket + 1 >= bucket_start_.size()) return {};
+// Per-thread tables indexed by edge id for chaining: the first sorted segment leaving an
+// edge, and whether some segment enters it. Every entry is reset after use, so a table can
+// serve any mesh (it only grows); scratch only, the result never depends on it.
+struct ChainScratch {
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<std::uint32_t> first_from;
+  std::vector<char> entered;
+  void reserve(std::size_t edges) {
+    if (first_from.size() < edges) {
+      first_from.resize(edges, kNone);
+      entered.resize(edges, 0);
+    }
+  }
+};
+
+PolygonSet Slicer::slice(std::size_t level_index, double level, const SliceOptions& options) const {
+  if (!std::isfinite(level) || level_index + 1 >= level_start_.size()) return {};
+  const std::uint32_t b0 = level_start_[level_index], b1 = level_start_[level_index + 1];
+  if (b0 == b1) return {};
 
   // 1. One directed segment per cut triangle, from edge to edge.
   std::vector<Segment> segs;
-  for (std::uint32_t i = bucket_start_[bucket]; i < bucket_start_[bucket + 1]; ++i) {
-    const Entry& e = bucket_entries_[i];
+  segs.reserve(b1 - b0);
+  for (std::uint32_t i = b0; i < b1; ++i) {
+    const std::uint32_t t = level_tris_[i];
+    const auto& c = tri_c_[t];
     bool above[3];
     int count = 0;
     for (int k = 0; k < 3; ++k)
-      count += (above[k] = e.c[k] >= level) ? 1 : 0;
-    if (count == 0 || count == 3) continue;
-    const std::uint32_t t = e.tri;
+      count += (above[k] = c[k] >= level) ? 1 : 0;
+    if (count == 0 || count == 3) continue;  // cannot happen for min < level <= max
     const bool lonely_above = count == 1;
     int i0 = 0;
     while (above[i0] != lonely_above)
@@ -225,19 +242,20 @@ PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
   std::sort(segs.begin(), segs.end(), [](const Segment& a, const Segment& b) {
     return a.from != b.from ? a.from < b.from : a.to < b.to;
   });
+  thread_local ChainScratch scratch;
+  scratch.reserve(edge_ends_.size());
+  std::uint32_t* first_from = scratch.first_from.data();
+  char* entered = scratch.entered.data();
+  for (std::size_t j = segs.size(); j-- > 0;) {
+    first_from[segs[j].from] = static_cast<std::uint32_t>(j);
+    entered[segs[j].to] = 1;
+  }
   std::vector<char> used(segs.size(), 0);
-  std::vector<std::uint32_t> entered;  // sorted 'to' edges: a segment whose start nobody
-  entered.reserve(segs.size());        // enters begins an open chain
-  for (const Segment& s : segs)
-    entered.push_back(s.to);
-  std::sort(entered.begin(), entered.end());
   auto next_unused = [&](std::uint32_t edge) -> std::size_t {
-    auto it = std::lower_bound(segs.begin(), segs.end(), edge,
-                               [](const Segment& s, std::uint32_t e) { return s.from < e; });
-    for (; it != segs.end() && it->from == edge; ++it) {
-      const auto j = static_cast<std::size_t>(it - segs.begin());
+    std::size_t j = first_from[edge];
+    if (j == ChainScratch::kNone) return segs.size();
+    for (; j < segs.size() && segs[j].from == edge; ++j)
       if (!used[j]) return j;
-    }
     return segs.size();
   };
 
@@ -268,10 +286,13 @@ PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
   };
   // Open chains first, from their true starts, then the loops.
   for (std::size_t i = 0; i < segs.size(); ++i)
-    if (!used[i] && !std::binary_search(entered.begin(), entered.end(), segs[i].from)) walk(i);
+    if (!used[i] && !entered[segs[i].from]) walk(i);
   for (std::size_t i = 0; i < segs.size(); ++i)
     if (!used[i]) walk(i);
-
+  for (const Segment& s : segs) {  // leave the tables clean for the next level
+    first_from[s.from] = ChainScratch::kNone;
+    entered[s.to] = 0;
+  }
   // 3. Open chains (open or broken meshes): append the nearest chain whose start lies within
   // the gap tolerance of the end; whatever stays open is closed by its chord.
   PolygonSet raw;
@@ -315,13 +336,38 @@ PolygonSet Slicer::slice(double level, const SliceOptions& options) const {
 
 std::vector<PolygonSet> slice_mesh(const Mesh& mesh, Axis axis, const std::vector<double>& levels,
                                    const SliceOptions& options, const Context& ctx) {
-  std::vector<PolygonSet> out(levels.size());
-  if (mesh.empty() || levels.empty()) return out;
+  std::array<std::vector<double>, 3> all;
+  all[static_cast<std::size_t>(axis)] = levels;
+  auto out = slice_mesh_axes(mesh, all, options, ctx);
+  return std::move(out[static_cast<std::size_t>(axis)]);
+}
+
+std::array<std::vector<PolygonSet>, 3> slice_mesh_axes(
+    const Mesh& mesh, const std::array<std::vector<double>, 3>& levels, const SliceOptions& options,
+    const Context& ctx) {
+  std::array<std::vector<PolygonSet>, 3> out;
+  std::size_t total = 0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    out[a].resize(levels[a].size());
+    total += levels[a].size();
+  }
+  if (mesh.empty() || total == 0) return out;
   ctx.report("slice", 0.0);
-  const Slicer slicer(mesh, axis);
-  parallel_for(levels.size(), ctx.threads, [&](std::size_t i) {
+  const MeshEdges edges(mesh);
+  std::vector<std::unique_ptr<Slicer>> slicers(3);
+  parallel_for(3, ctx.threads, [&](std::size_t a) {
+    if (!levels[a].empty())
+      slicers[a] = std::make_unique<Slicer>(mesh, edges, static_cast<Axis>(a), levels[a]);
+  });
+  // One loop over the levels of all axes: no serial step between the families.
+  parallel_for(total, ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;  // the caller checks ctx after a cancelled run
-    out[i] = slicer.slice(levels[i], options);
+    std::size_t a = 0;
+    while (i >= levels[a].size()) {
+      i -= levels[a].size();
+      ++a;
+    }
+    out[a][i] = slicers[a]->slice(i, levels[a][i], options);
   });
   ctx.report("slice", 1.0);
   return out;

@@ -514,6 +514,7 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
 
 TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride, int threads) {
   TriSliceTop t;
+  t.pitch_ = model.pitch_mm * std::max(1, stride);
   // The three indexes are independent: one task each (each writes only its own member).
   parallel_for(3, threads, [&](std::size_t k) {
     if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);

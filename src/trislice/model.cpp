@@ -36,8 +36,8 @@ Result<TriSliceModel> build_trislice_families(const Mesh& mesh, double pitch_mm,
   if (count > 2e6)
     return bad_parameter("tri-slice: pitch " + std::to_string(pitch_mm) + " mm gives " +
                          std::to_string(static_cast<long>(count)) + " slices (limit 2 million)");
+  std::array<std::vector<double>, 3> levels;
   for (int a = 0; a < 3; ++a) {
-    if (ctx.cancelled()) return Status{Error::kCancelled, "tri-slice: cancelled"};
     const auto axis = static_cast<Axis>(a);
     SliceFamily& fam = model.family(axis);
     fam.axis = axis;
@@ -46,12 +46,15 @@ Result<TriSliceModel> build_trislice_families(const Mesh& mesh, double pitch_mm,
     lattice(model.bounds.min[a], model.bounds.max[a], pitch_mm, k0, k1);
     fam.first_level = static_cast<double>(k0) * pitch_mm;
     if (!families[static_cast<std::size_t>(a)]) continue;
-    std::vector<double> levels;
     for (long k = k0; k <= k1; ++k)
-      levels.push_back(static_cast<double>(k) * pitch_mm);
-    fam.slices = slice_mesh(mesh, axis, levels, {}, ctx);
-    ctx.report("tri-slice model", (a + 1) / 3.0);
+      levels[static_cast<std::size_t>(a)].push_back(static_cast<double>(k) * pitch_mm);
   }
+  // The three families in one call: one edge table, one parallel loop over all slices.
+  auto slices = slice_mesh_axes(mesh, levels, {}, ctx);
+  if (ctx.cancelled()) return Status{Error::kCancelled, "tri-slice: cancelled"};
+  for (std::size_t a = 0; a < 3; ++a)
+    model.families[a].slices = std::move(slices[a]);
+  ctx.report("tri-slice model", 1.0);
   return model;
 }
 

@@ -237,6 +237,17 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
 
 }  // namespace
 
+double trislice_height_error_bound_mm(double pitch_mm, double radius_mm) {
+  if (!(pitch_mm > 0.0) || !(radius_mm > 0.0)) return 0.0;
+  // offset.h: ds^2 / (8 R sin^2 theta n_z) with sin^2 theta = 2/3 and n_z = 1/sqrt(3).
+  return 3.0 * std::sqrt(3.0) * pitch_mm * pitch_mm / (16.0 * radius_mm);
+}
+
+double effective_adaptive_tolerance_mm(const ScanParams& p, double pitch_mm, double radius_mm) {
+  return std::max(p.adaptive_tolerance_mm,
+                  p.adaptive_model_fraction * trislice_height_error_bound_mm(pitch_mm, radius_mm));
+}
+
 Status validate(const ScanParams& p) {
   if (p.direction == Axis::kZ) return bad_parameter("scan direction must be x or y");
   if (!(p.stepover_mm > 0.0))
@@ -247,6 +258,8 @@ Status validate(const ScanParams& p) {
   if (!(p.tolerance_mm >= 0.0)) return bad_parameter("tolerance must be >= 0 mm");
   if (!(p.adaptive_tolerance_mm >= 0.0)) return bad_parameter("adaptive tolerance must be >= 0 mm");
   if (!(p.adaptive_max_step_mm > 0.0)) return bad_parameter("adaptive max step must be positive");
+  if (!(p.adaptive_model_fraction >= 0.0) || p.adaptive_model_fraction > 100.0)
+    return bad_parameter("adaptive model fraction must be in 0..100");
   if (!(p.feed_mm_min > 0.0) || !(p.plunge_feed_mm_min > 0.0))
     return bad_parameter("feeds must be positive");
   return {};
@@ -280,7 +293,9 @@ Status validate(const ContourParams& p) {
 Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
                                                      double tool_radius_mm, double extra_mm,
                                                      const ScanParams& p, const Context& ctx) {
-  return cl_lines(top, bounds, tool_radius_mm, extra_mm, p, kInf, p.adaptive_tolerance_mm, ctx);
+  return cl_lines(top, bounds, tool_radius_mm, extra_mm, p, kInf,
+                  effective_adaptive_tolerance_mm(p, top.pitch_mm(), tool_radius_mm + extra_mm),
+                  ctx);
 }
 
 Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& top,

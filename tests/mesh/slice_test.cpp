@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -179,6 +180,29 @@ TEST(Slice, ResultsDoNotDependOnThreads) {
         EXPECT_EQ(s1[i].rings[r], s4[i].rings[r]);
     }
   }
+}
+
+// The per-level triangle lists are built from the levels sorted: levels given out of order,
+// repeated, on vertices, outside the part or not finite must each get the section that a call
+// with that level alone gives, on every axis of the three-axis call.
+TEST(Slice, ThreeAxisCallEqualsOneLevelAtATime) {
+  const Mesh m = make_filleted_torus_part({});
+  const std::vector<double> base = {3.0,  -7.25, 0.0,  12.5, 3.0,         1e9,
+                                    -1e9, 5.125, 20.0, -0.5, std::nan("")};
+  std::array<std::vector<double>, 3> levels = {base, base, base};
+  levels[2] = {0.0, 2.0, 0.5, 2.0, 1.0, -3.0, 4.0};  // z: plate top, fillet, ring
+  const auto all = slice_mesh_axes(m, levels);
+  for (std::size_t a = 0; a < 3; ++a) {
+    ASSERT_EQ(all[a].size(), levels[a].size());
+    for (std::size_t i = 0; i < levels[a].size(); ++i) {
+      const auto one = slice_mesh(m, static_cast<Axis>(a), {levels[a][i]});
+      ASSERT_EQ(one.size(), 1u);
+      EXPECT_EQ(all[a][i].rings, one[0].rings) << "axis " << a << " level " << levels[a][i];
+    }
+  }
+  EXPECT_FALSE(all[0][0].empty());
+  EXPECT_TRUE(all[0][5].empty());   // beyond the part
+  EXPECT_TRUE(all[0][10].empty());  // NaN
 }
 
 TEST(Slice, OpenMeshChainsAreJoinedOrClosed) {

@@ -1,6 +1,7 @@
 // Slicing a mesh by families of parallel planes into polygon sets.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "swarf/core/context.h"
@@ -30,6 +31,13 @@ struct SliceOptions {
 std::vector<PolygonSet> slice_mesh(const Mesh& mesh, Axis axis, const std::vector<double>& levels,
                                    const SliceOptions& options = {},
                                    const Context& ctx = default_context());
+
+/// slice_mesh for the three axes at once (result a: the levels[a] cut normal to axis a), with
+/// the mesh's edge table built once and one parallel loop over all levels. Same sections as
+/// three calls of slice_mesh.
+std::array<std::vector<PolygonSet>, 3> slice_mesh_axes(
+    const Mesh& mesh, const std::array<std::vector<double>, 3>& levels,
+    const SliceOptions& options = {}, const Context& ctx = default_context());
 
 /// Evenly spaced levels from `from` to `to` (both inside the range) at `pitch`, centred so
 /// that the margins at both ends are equal.

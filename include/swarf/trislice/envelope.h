@@ -132,6 +132,8 @@ class TriSliceTop {
                        ScanHint* hint = nullptr) const;
   const SliceEnvelope& family(Axis a) const { return a == Axis::kX ? x_ : y_; }
   const LevelEnvelope& levels() const { return z_; }
+  /// Spacing of the slices the index reads: the model's pitch times the stride, mm.
+  double pitch_mm() const { return pitch_; }
   std::size_t memory_bytes() const {
     return x_.memory_bytes() + y_.memory_bytes() + z_.memory_bytes();
   }
@@ -139,6 +141,7 @@ class TriSliceTop {
  private:
   SliceEnvelope x_, y_;
   LevelEnvelope z_;
+  double pitch_ = 0.0;
 };
 
 }  // namespace swarf
