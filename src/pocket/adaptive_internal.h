@@ -25,6 +25,8 @@ struct Model {
   /// +1: material on the left (the paper's scan order); -1: mirrored, for climb milling.
   int sigma = -1;
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
+  PolygonSet region;               ///< the pocket (outer ring, islands), exact
+  double wall_stock_mm = 0.0;      ///< left on walls and islands
   double pocket_area_mm2 = 0.0;
   Grid grid;
   BitImage pocket;     ///< pixel centres inside the pocket

@@ -72,6 +72,8 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // edge grown by that distance can be that close to it, so each edge tests just those.
   m.forbidden = BitImage(m.grid.width, m.grid.height);
   const double keep = p.wall_stock_mm + 0.5 * m.h;
+  m.region = pocket.region;
+  m.wall_stock_mm = p.wall_stock_mm;
   for (int j = 0; j < m.grid.height; ++j)
     for (int i = 0; i < m.grid.width; ++i)
       if (!m.pocket.get(i, j)) m.forbidden.set(i, j, true);

@@ -49,6 +49,24 @@ double distance_to_rings(const PolygonSet& region, Vec2 p) {
   return d;
 }
 
+Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  Vec2 q = p;
+  for (const Ring& r : region.rings)
+    for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+      const Vec2 a = r[i], ab = r[(i + 1) % n] - a;
+      const double l2 = norm_sq(ab);
+      const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+      const Vec2 c = a + ab * t;
+      const double d2 = norm_sq(p - c);
+      if (d2 < best) {
+        best = d2;
+        q = c;
+      }
+    }
+  return q;
+}
+
 namespace {
 
 int orient(Vec2 a, Vec2 b, Vec2 c) {

@@ -20,6 +20,8 @@ bool point_in_region(const PolygonSet& region, Vec2 p);
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
 /// Distance from p to the nearest edge of any ring.
 double distance_to_rings(const PolygonSet& region, Vec2 p);
+/// The nearest point to p on any ring's edges.
+Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p);
 
 /// A place where two edges cross: ring and edge indices and the point.
 struct Crossing {

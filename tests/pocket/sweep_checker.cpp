@@ -129,7 +129,14 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     return changed;
   };
   const std::vector<Sample> samples = floor_samples(path, 0.5 * h);
-  double within = 0.0;
+  // What the program removes at some point: the arc counts contact with that material
+  // only. A hair the tool never removes (closer to a wall than half a checker pixel beyond
+  // the tool's edge, or the corner material no tool position reaches) touches the ring the
+  // arc is read on without being engaged.
+  std::vector<unsigned char> ever = cell;
+  for (const Sample& s : samples)
+    stamp(s.p, ever, 1, 2);
+  double within = 0.0, within_any = 0.0, cutting_any = 0.0;
   // Removal measure (seed 000's definition: the material a move removes): area removed
   // over a window of path, as the stepover of a straight cut, as an angle.
   double win_len = 0.0, win_area = 0.0, within_removal = 0.0;
@@ -152,7 +159,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     double sample_eng = -1.0;
     if (!s.entry) {
       // Engagement: front half of a circle just outside the tool, 1 degree apart.
-      int n = 0;
+      int n = 0, n_any = 0;
       const double rr = R + 0.5 * h;
       const double base = std::atan2(s.dir.y, s.dir.x);
       for (int k = -89; k <= 90; ++k) {
@@ -160,8 +167,14 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
         const int i = static_cast<int>(std::lround((q.x - box.min.x) / h));
         const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
-        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1)
-          ++n;
+        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1) {
+          ++n_any;
+          if (ever[static_cast<std::size_t>(j) * w + i] == 2) ++n;
+        }
+      }
+      if (n_any > 2) {
+        cutting_any += s.ds;
+        if (std::abs(n_any - target_deg) <= 0.2 * target_deg) within_any += s.ds;
       }
       const double eng = n;
       sample_eng = eng;
@@ -184,6 +197,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   }
   flush();
   if (rep.cutting_length_mm > 0) rep.within_20pct = within / rep.cutting_length_mm;
+  if (cutting_any > 0) rep.within_20pct_any_material = within_any / cutting_any;
   if (rep.removal_cutting_length_mm > 0)
     rep.within_20pct_removal = within_removal / rep.removal_cutting_length_mm;
   // Opening of the pocket by the disk: union of disks at centres >= R from every wall.

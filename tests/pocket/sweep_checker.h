@@ -1,7 +1,8 @@
 // An independent check of a pocket toolpath, sharing no code with the generator: a fine
 // bitmap of the pocket, the tool disk stamped brute force along the final floor pass
 // sampled densely, exact point-to-edge distances for gouges, and the engagement read off
-// the stamped bitmap as the arc of the tool's front half touching uncut material.
+// the stamped bitmap as the arc of the tool's front half touching uncut material that the
+// program removes at some point (and also by removal, see SweepReport).
 #pragma once
 
 #include <vector>
@@ -26,6 +27,11 @@ struct SweepReport {
   /// circle of R + pixel/2, so every pass along a wall reads a few degrees there).
   double removal_cutting_length_mm = 0.0;
   double within_20pct_removal = 0.0;
+  /// The arc counting any uncut pocket material on its ring, also what no pass ever
+  /// removes (session 1's measure; it reads a few degrees wherever a pass runs within half a
+  /// checker pixel of a hair it leaves, and the full corner arc where the tool sits tangent
+  /// to both walls of a corner).
+  double within_20pct_any_material = 0.0;
 };
 
 /// One floor-pass sample of the sweep, for diagnosis (where the engagement leaves its band).

@@ -98,7 +98,7 @@ struct AdaptiveResult {
   int trochoid_groups = 0;
   int boundary_groups = 0;
   double material_left_mm2 = 0.0;  ///< reachable material the path leaves, per the simulation
-  double gouge_steps = 0;          ///< steps whose disk touched a forbidden pixel (0 expected)
+  double gouge_steps = 0;  ///< steps whose disk reaches past a wall (exact geometry; 0 expected)
 };
 
 /// Computes the adaptive pocket toolpath. Errors: kBadParameter, kToolTooLarge (the tool
