@@ -55,6 +55,7 @@ void quality(benchmark::State& state, const Pocket& p, const Toolpath& tp, doubl
   state.counters["residual_mm2"] = s.residual_mm2;
   state.counters["within20_pct"] = 100.0 * s.within_20pct;
   state.counters["within20_rm_pct"] = 100.0 * s.within_20pct_removal;
+  state.counters["within20_any_pct"] = 100.0 * s.within_20pct_any_material;
   state.counters["max_eng_deg"] = s.max_engagement_deg;
   state.counters["slot_mm"] = s.slot_length_mm;
 }

@@ -49,10 +49,11 @@ int main(int argc, char** argv) {
   }
   const ToolpathMetrics m = compute_metrics(*program);
   std::printf(
-      "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%), "
-      "max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d\n",
+      "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
+      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
-      100 * s.within_20pct_removal, s.max_engagement_deg, s.slot_length_mm, m.machining_time_s,
+      100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
+      s.slot_length_mm, m.machining_time_s,
       static_cast<int>(m.lift_offs));
   return 0;
 }
