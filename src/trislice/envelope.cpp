@@ -515,6 +515,11 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
 TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride, int threads) {
   TriSliceTop t;
   t.pitch_ = model.pitch_mm * std::max(1, stride);
+  // Wider bins mean fewer (slice, bin) cells per query but looser bounds and more edges per
+  // cell: at coarse pitches, where a ball spans few slices, the cells dominate (third round:
+  // 1 mm instead of 0.5 mm takes 11-15 % off a query at 0.25 / 0.125 / 0.05 mm, and adds 7 %
+  // at 0.01 mm).
+  if (!(bin_mm > 0.0)) bin_mm = auto_bin_mm(t.pitch_);
   // The three indexes are independent: one task each (each writes only its own member).
   parallel_for(3, threads, [&](std::size_t k) {
     if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
