@@ -498,7 +498,15 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const Seg& g = seg_[k];
             const double need = best - g.z;
             if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-            const double h = drop_on(g, p, r2);
+            // drop_on, with the square root only for an edge that can still win.
+            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0, len2 = ex * ex + ey * ey;
+            const double t =
+                len2 > 0.0 ? std::clamp(((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2, 0.0, 1.0)
+                           : 0.0;
+            const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+            const double left = r2 - (qx * qx + qy * qy);
+            if (left < 0.0 || (need >= 0.0 && left <= need * need)) continue;
+            const double h = g.z + std::sqrt(left);
             if (h > best) {
               best = h;
               best_k = k;
