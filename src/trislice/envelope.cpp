@@ -498,7 +498,15 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const Seg& g = seg_[k];
             const double need = best - g.z;
             if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-            const double h = drop_on(g, p, r2);
+            // drop_on, with the square root only for an edge that can still win.
+            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0, len2 = ex * ex + ey * ey;
+            const double t =
+                len2 > 0.0 ? std::clamp(((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2, 0.0, 1.0)
+                           : 0.0;
+            const double qx = g.x0 + t * ex - p.x, qy = g.y0 + t * ey - p.y;
+            const double left = r2 - (qx * qx + qy * qy);
+            if (left < 0.0 || (need >= 0.0 && left <= need * need)) continue;
+            const double h = g.z + std::sqrt(left);
             if (h > best) {
               best = h;
               best_k = k;
@@ -515,6 +523,11 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
 TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int stride, int threads) {
   TriSliceTop t;
   t.pitch_ = model.pitch_mm * std::max(1, stride);
+  // Wider bins mean fewer (slice, bin) cells per query but looser bounds and more edges per
+  // cell: at coarse pitches, where a ball spans few slices, the cells dominate (third round:
+  // 1 mm instead of 0.5 mm takes 11-15 % off a query at 0.25 / 0.125 / 0.05 mm, and adds 7 %
+  // at 0.01 mm).
+  if (!(bin_mm > 0.0)) bin_mm = auto_bin_mm(t.pitch_);
   // The three indexes are independent: one task each (each writes only its own member).
   parallel_for(3, threads, [&](std::size_t k) {
     if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);

@@ -343,7 +343,7 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
   const int stride =
       std::max(1, static_cast<int>(std::floor(rough.min_pitch_mm / model.pitch_mm + 1e-9)));
   TriSliceTop coarse;
-  if (stride > 1) coarse = TriSliceTop::build(model, 0.5, stride, ctx.threads);
+  if (stride > 1) coarse = TriSliceTop::build(model, 0.0, stride, ctx.threads);
   const TriSliceTop& use = stride > 1 ? coarse : top;
   // Table 1: successive inflations, the deepest layer last.
   for (int k = rough.layers - 1; k >= 0; --k) {

@@ -122,10 +122,15 @@ struct ScanHint {
 /// The three families of a model queried together (the xy family only when it was sliced).
 class TriSliceTop {
  public:
+  /// `bin_mm`: bin width of the vertical families along their slices; 0 = auto_bin_mm of the
+  /// pitch read. The answers do not depend on it (it only changes what the bounds prune).
   /// `threads`: the three families are indexed in parallel (0 = all cores); the index does
   /// not depend on it.
-  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.5, int stride = 1,
+  static TriSliceTop build(const TriSliceModel& model, double bin_mm = 0.0, int stride = 1,
                            int threads = 0);
+  /// The fastest bin width measured on the Table 2 part with a ø8 ball: 1 mm for pitches of
+  /// 0.05 mm and coarser, 0.5 mm finer (bench/RESULTS-trislice.md, third round).
+  static double auto_bin_mm(double pitch_mm) { return pitch_mm >= 0.05 - 1e-9 ? 1.0 : 0.5; }
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,
