@@ -92,7 +92,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
     out.summary["adaptive_tolerance_mm"] =
         effective_adaptive_tolerance_mm(sp, model->pitch_mm, tool.radius() + sp.stock_to_leave_mm);
   const auto t1 = std::chrono::steady_clock::now();
-  const TriSliceTop top = TriSliceTop::build(*model, 0.5, 1, ctx.threads);
+  const TriSliceTop top = TriSliceTop::build(*model, 0.0, 1, ctx.threads);  // bins from the pitch
   const int layers = p["rough_layers"].get<int>();
   if (layers > 0) {
     RoughingParams rp;
