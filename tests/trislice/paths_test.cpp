@@ -271,34 +271,35 @@ TEST(TriSliceRest, InnerFilletShowsAndOuterDoesNot) {
   EXPECT_NE(ply.find("element vertex "), std::string::npos);
 }
 
-}  // namespace
-}  // namespace swarf
-
-namespace swarf {
-namespace {
-
-TEST(TriSlicePaths, ScanLinesIndependentOfThreadCount) {
+// A torus R 12 / r 5 sliced at 0.25 mm, as the scan-line tests read it.
+struct SmallTorus {
+  TriSliceModel model;
+  TriSliceTop top;
+};
+SmallTorus small_torus() {
   const Mesh torus = make_torus({0, 0, 5}, 12, 5, 48, 24);
   auto model = build_trislice(torus, 0.25);
-  ASSERT_TRUE(model.ok());
-  const TriSliceTop top = TriSliceTop::build(*model);
+  EXPECT_TRUE(model.ok()) << model.status().to_string();
+  SmallTorus t{model.value(), {}};
+  t.top = TriSliceTop::build(t.model);
+  return t;
+}
+
+TEST(TriSlicePaths, ScanLinesIndependentOfThreadCount) {
+  const SmallTorus torus = small_torus();
+  const TriSliceTop& top = torus.top;
+  const Box3& bounds = torus.model.bounds;
   ScanParams p;
   p.stepover_mm = 0.7;
   p.sampling_mm = 0.3;
   Context one, many;
   one.threads = 1;
   many.threads = 3;
-  auto a = scan_cl_lines(top, model->bounds, 4.0, 0.0, p, one);
-  auto b = scan_cl_lines(top, model->bounds, 4.0, 0.0, p, many);
+  auto a = scan_cl_lines(top, bounds, 4.0, 0.0, p, one);
+  auto b = scan_cl_lines(top, bounds, 4.0, 0.0, p, many);
   ASSERT_TRUE(a.ok() && b.ok());
   ASSERT_EQ(*a, *b);
 }
-
-}  // namespace
-}  // namespace swarf
-
-namespace swarf {
-namespace {
 
 // Adaptive sampling along the scan lines against the uniform grid on the Table 2 part: the
 // adaptive path, linearly interpolated, is neither below a uniform CL point by more than the
@@ -415,19 +416,12 @@ TEST(TriSlicePaths, AdaptiveToleranceFollowsTheModelBoundAtCoarsePitch) {
       r.uniform_below_exact * 1e3, r.adaptive_above_exact * 1e3, r.uniform_above_exact * 1e3);
 }
 
-}  // namespace
-}  // namespace swarf
-
-namespace swarf {
-namespace {
-
 // Adaptive lines of any length (the last stretch of a line is not a power of two): strictly
 // increasing along the line, both ends kept, every point equal to the uniform grid's there.
 TEST(TriSlicePaths, AdaptiveLinesAreSubsetsOfTheUniformGridForAnyLength) {
-  const Mesh torus = make_torus({0, 0, 5}, 12, 5, 48, 24);
-  auto model = build_trislice(torus, 0.25);
-  ASSERT_TRUE(model.ok());
-  const TriSliceTop top = TriSliceTop::build(*model);
+  const SmallTorus torus = small_torus();
+  const TriSliceTop& top = torus.top;
+  const Box3& bounds = torus.model.bounds;
   for (double sampling : {0.1, 0.13, 0.3, 0.7})
     for (double width : {20.0, 20.3, 21.1}) {
       ScanParams p;
@@ -435,9 +429,9 @@ TEST(TriSlicePaths, AdaptiveLinesAreSubsetsOfTheUniformGridForAnyLength) {
       p.sampling_mm = sampling;
       p.region = Box2{{-10.0, -10.0}, {-10.0 + width, 10.0}};
       p.adaptive = false;
-      auto u = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      auto u = scan_cl_lines(top, bounds, 4.0, 0.0, p);
       p.adaptive = true;
-      auto a = scan_cl_lines(top, model->bounds, 4.0, 0.0, p);
+      auto a = scan_cl_lines(top, bounds, 4.0, 0.0, p);
       ASSERT_TRUE(u.ok() && a.ok());
       ASSERT_EQ(u->size(), a->size());
       for (std::size_t i = 0; i < u->size(); ++i) {
