@@ -118,6 +118,24 @@ TEST(AdaptivePocket, LPocketWithRoundAndRectangularIsland) {
   expect_correct(l, run(l, 8.0, 1.6), 0.85, 0.86);
 }
 
+// Round islands whose gap to the nearest walls is the tool diameter plus 0.8 mm: the
+// boundary of Algorithm 4 runs round each island through uncut material, a full slot, unless
+// the chooser nibbles there instead (move_chooser.cpp).
+TEST(AdaptivePocket, IslandsLessThanAMillimetreFromTheWalls) {
+  std::vector<Ring> islands;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const Vec2 c{12.0 + 20.0 * i, 12.0 + 24.0 * j};
+      Ring r;
+      for (int k = 0; k < 32; ++k)
+        r.push_back(c + Vec2{std::cos(kPi * k / 16), std::sin(kPi * k / 16)} * 3.2);
+      islands.push_back(r);
+    }
+  const Pocket p =
+      make_pocket({{0, 0}, {64, 0}, {64, 48}, {0, 48}}, islands, "64 x 48, 6 islands").value();
+  expect_correct(p, run(p, 8.0, 0.8), 0.74, 0.79);
+}
+
 TEST(AdaptivePocket, ChannelBarelyWiderThanTheTool) {
   Pocket ch = make_pocket({{0, 0}, {40, 0}, {40, 8.8}, {0, 8.8}}, {}, "channel 8.8 x 40").value();
   const Outcome o = run(ch, 8.0, 1.6);
