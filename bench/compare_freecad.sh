@@ -20,6 +20,13 @@ pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
         (50 if k % 2 == 0 else 24) * math.sin(math.pi * k / 5 + math.pi / 2)] for k in range(10)]
 json.dump({"outer": pts, "islands": []}, open(sys.argv[1], "w"))
 PY
+# Six round islands 1 mm (room) from the walls (the case where Algorithm 4 used to slot).
+python3 - "$tmp/islands.json" <<'PY'
+import json, math, sys
+isl = [[[15 + 25 * i + 4 * math.cos(math.pi * k / 16), 15 + 30 * j + 4 * math.sin(math.pi * k / 16)]
+        for k in range(32)] for i in range(3) for j in range(2)]
+json.dump({"outer": [[0, 0], [80, 0], [80, 60], [0, 60]], "islands": isl}, open(sys.argv[1], "w"))
+PY
 cpu() { /usr/bin/time -f "%U %S" -o "$tmp/t" "$@" >/dev/null 2>&1; awk '{printf "%.3f", $1 + $2}' "$tmp/t"; }
 printf "| pocket | generator | CPU s | within +-20 %% (arc) | (removal) | (arc, any material) | max eng. deg | slot mm | machining s | residual mm^2 | gouge mm |\n"
 printf "|---|---|---|---|---|---|---|---|---|---|---|\n"
@@ -34,7 +41,8 @@ row() {  # name generator cpu sweep-line
 for spec in "L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|10" \
             "Kiri:Moto 40x40, D10|tests/data/pocket/kirimoto_pocket.json|10" \
             "star R50/24, D10|$tmp/star.json|10" \
-            "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6"; do
+            "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6" \
+            "80x60 + 6 islands 1 mm from walls, D10|$tmp/islands.json|10"; do
   IFS="|" read -r name file d <<<"$spec"
   so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
   target=$(awk -v d="$d" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
