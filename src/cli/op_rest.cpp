@@ -19,6 +19,13 @@ Result<OperationOutput> run_rest(const OperationInput& in) {
   if (!stl.ok()) return stl.status();
   const Tool& tool = *in.tool;
   const double pitch = p["pitch"].get<double>();
+  // Inflate-then-shrink compares solids: an open surface has no inside to compare.
+  const MeshCheck check = check_mesh(stl->mesh);
+  if (check.open_edges > 0)
+    return Status{Error::kBadInput, in.input_path + ": the mesh is not a closed solid (" +
+                                        std::to_string(check.open_edges) + " open edges, " +
+                                        std::to_string(check.non_manifold_edges) +
+                                        " non-manifold edges): rest regions need its inside"};
   const auto t0 = std::chrono::steady_clock::now();
   auto model = build_trislice(stl->mesh, pitch, {}, ctx);
   if (!model.ok()) return model.status().with_context(in.input_path);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli/operation.h"
+#include "swarf/dropcut/dropcut.h"
 #include "swarf/mesh/stl.h"
 #include "swarf/toolpath/postprocess.h"
 #include "swarf/trislice/envelope.h"
@@ -28,6 +29,83 @@ std::string cl_csv(const std::vector<std::vector<Vec3>>& lines) {
   return os.str();
 }
 
+// A mesh with open edges (a relief surface, a broken export) has no inside: its slices
+// are open chains, which the slicer closes by their chords, and the tri-slice top then floats
+// above the surface or dips into it (OpenCAMLib's mount_rush.stl: up to 17 mm above and
+// 0.28 mm below the exact drop, a gouge). Scanning such a mesh uses the exact drop-cutter on
+// the same grid instead (every grid point, with the stock to leave as a larger ball); it is
+// exact on any triangle soup. Roughing layers and contour paths need the solid: refused.
+Result<OperationOutput> scan_open_mesh(const OperationInput& in, const Mesh& mesh,
+                                       const MeshCheck& check, const ScanParams& sp,
+                                       OperationOutput out) {
+  const Context& ctx = in.ctx != nullptr ? *in.ctx : default_context();
+  const Tool& tool = *in.tool;
+  SWARF_RETURN_IF_ERROR(validate(sp));
+  if (tool.kind != ToolKind::kBall)
+    return bad_parameter("surface paths are for a ball end mill, got " + tool.description());
+  const double s = sp.stock_to_leave_mm;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto dc = DropCutter::build(mesh, CutterShape{tool.radius() + s, tool.radius() + s});
+  if (!dc.ok()) return dc.status().with_context(in.input_path);
+  ClGrid grid;
+  grid.region = dc->mesh_bounds().xy();
+  grid.direction = sp.direction;
+  grid.stepover_mm = sp.stepover_mm;
+  grid.sampling_mm = sp.sampling_mm;
+  // The larger ball's tip lies s below the real tool's tip.
+  const double floor_z = dc->mesh_bounds().min.z;
+  auto cl = drop_grid(*dc, grid, floor_z - s, ctx);
+  if (!cl.ok()) return cl.status().with_context(in.input_path);
+  const std::size_t per_line = grid.point_positions().size();
+  std::vector<std::vector<Vec3>> lines;
+  for (std::size_t start = 0; start < cl->size(); start += per_line) {
+    lines.emplace_back(cl->begin() + static_cast<std::ptrdiff_t>(start),
+                       cl->begin() + static_cast<std::ptrdiff_t>(start + per_line));
+    for (Vec3& q : lines.back())
+      q.z += s;
+  }
+  std::string csv = cl_csv(lines);
+  Toolpath tp;
+  tp.name = "drop-cutter scan finishing (open mesh)";
+  tp.tool_number = tool.number;
+  tp.tool_description = tool.description();
+  tp.tool_diameter_mm = tool.diameter_mm;
+  tp.clearance_z_mm = dc->mesh_bounds().max.z + s + 5.0;
+  auto tip_at = [&](Vec2 xy) { return std::max(dc->drop_z(xy), floor_z - s) + s; };
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::vector<Vec3> line = lines[i];
+    if (sp.zigzag && i % 2 == 1) std::reverse(line.begin(), line.end());
+    line = sp.tolerance_mm > 0.0 ? simplify_polyline(line, sp.tolerance_mm) : line;
+    if (sp.zigzag && i > 0) {
+      // Stay down: follow the surface from the end of the last line to this one.
+      const Vec3 a = tp.position(), b = line.front();
+      const int n =
+          std::max(1, static_cast<int>(std::ceil(distance(a.xy(), b.xy()) / sp.sampling_mm)));
+      for (int k = 1; k < n; ++k) {
+        const Vec2 xy = a.xy() + (b.xy() - a.xy()) * (static_cast<double>(k) / n);
+        tp.feed_to({xy.x, xy.y, tip_at(xy)}, sp.feed_mm_min);
+      }
+      tp.feed_to(b, sp.feed_mm_min);
+    } else {
+      tp.rapid_to({line.front().x, line.front().y, tp.clearance_z_mm});
+      tp.plunge_to(line.front().z, sp.plunge_feed_mm_min);
+    }
+    for (std::size_t k = 1; k < line.size(); ++k)
+      tp.feed_to(line[k], sp.feed_mm_min);
+    if (!sp.zigzag) tp.retract();
+  }
+  if (sp.zigzag) tp.retract();
+  out.summary["open_mesh"] = true;
+  out.summary["open_edges"] = check.open_edges;
+  out.summary["non_manifold_edges"] = check.non_manifold_edges;
+  out.summary["cl_source"] = "exact drop-cutter (the mesh is not a closed solid)";
+  out.summary["finishing_s"] = seconds_since(t0);
+  out.summary["cl_points"] = cl->size();
+  out.toolpaths.push_back(std::move(tp));
+  out.csv_override = std::move(csv);
+  return out;
+}
+
 Result<OperationOutput> run_surface(const OperationInput& in) {
   const json& p = in.params;
   const Context& ctx = in.ctx != nullptr ? *in.ctx : default_context();
@@ -43,6 +121,35 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   const double pitch = p["pitch"].get<double>();
 
   OperationOutput out;
+  const MeshCheck check = check_mesh(stl->mesh);
+  // Open edges mean no inside; non-manifold edges alone (solids touching along an edge)
+  // slice as usual.
+  const bool solid = check.open_edges == 0;
+  if (!solid && (pattern == "contour" || p["rough_layers"].get<int>() > 0))
+    return Status{Error::kBadInput,
+                  in.input_path + ": the mesh is not a closed solid (" +
+                      std::to_string(check.open_edges) + " open edges, " +
+                      std::to_string(check.non_manifold_edges) +
+                      " non-manifold edges): tri-slice " +
+                      (pattern == "contour" ? "contour paths" : "roughing") +
+                      " need its inside; repair it, or use --pattern scan without "
+                      "--rough-layers (exact drop-cutter on open meshes)"};
+  const double feed = p["feed"].get<double>(), plunge = p["plunge_feed"].get<double>();
+  ScanParams sp;
+  sp.direction = dir == "x" ? Axis::kX : Axis::kY;
+  sp.zigzag = p["zigzag"].get<bool>();
+  sp.stepover_mm = p["stepover"].get<double>();
+  sp.sampling_mm = p["sampling"].get<double>();
+  sp.stock_to_leave_mm = p["stock_to_leave"].get<double>();
+  sp.tolerance_mm = p["tolerance"].get<double>();
+  // Adaptive sampling along the lines unless --uniform (the CSV then holds the full grid).
+  sp.adaptive = !p["uniform"].get<bool>();
+  sp.adaptive_max_step_mm = p["max_step"].get<double>();
+  sp.adaptive_tolerance_mm = p["adaptive_tolerance"].get<double>();
+  sp.adaptive_model_fraction = p["adaptive_model_fraction"].get<double>();
+  sp.feed_mm_min = feed;
+  sp.plunge_feed_mm_min = plunge;
+  if (!solid) return scan_open_mesh(in, stl->mesh, check, sp, std::move(out));
   const auto t0 = std::chrono::steady_clock::now();
   // Scanning reads all three families (the xy one holds steep walls), waterlines only z.
   const std::array<bool, 3> families = pattern == "scan" ? std::array<bool, 3>{true, true, true}
@@ -56,7 +163,6 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
     slices += f.size();
   out.summary["slices"] = slices;
 
-  const double feed = p["feed"].get<double>(), plunge = p["plunge_feed"].get<double>();
   if (pattern == "contour") {
     ContourParams cp;
     cp.stepdown_mm = p["stepdown"].get<double>();
@@ -74,20 +180,6 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
     return out;
   }
 
-  ScanParams sp;
-  sp.direction = dir == "x" ? Axis::kX : Axis::kY;
-  sp.zigzag = p["zigzag"].get<bool>();
-  sp.stepover_mm = p["stepover"].get<double>();
-  sp.sampling_mm = p["sampling"].get<double>();
-  sp.stock_to_leave_mm = p["stock_to_leave"].get<double>();
-  sp.tolerance_mm = p["tolerance"].get<double>();
-  // Adaptive sampling along the lines unless --uniform (the CSV then holds the full grid).
-  sp.adaptive = !p["uniform"].get<bool>();
-  sp.adaptive_max_step_mm = p["max_step"].get<double>();
-  sp.adaptive_tolerance_mm = p["adaptive_tolerance"].get<double>();
-  sp.adaptive_model_fraction = p["adaptive_model_fraction"].get<double>();
-  sp.feed_mm_min = feed;
-  sp.plunge_feed_mm_min = plunge;
   if (sp.adaptive)
     out.summary["adaptive_tolerance_mm"] =
         effective_adaptive_tolerance_mm(sp, model->pitch_mm, tool.radius() + sp.stock_to_leave_mm);

@@ -35,6 +35,54 @@ std::vector<Vec3> read_cl(const std::string& csv) {
   return out;
 }
 
+// An open surface (a dome without its base, as a relief or a broken export comes) has no
+// inside for the tri-slice model: scanning falls back to the exact drop-cutter (the same CL
+// points as `swarf dropcut`, stock to leave as a larger ball), contour paths are refused.
+TEST(TriSliceCli, OpenMeshScansWithTheExactDropCutterAndRefusesContours) {
+  TempDir dir;
+  const Mesh sphere = make_sphere({0, 0, 0}, 8.0, 64);
+  Mesh dome;
+  dome.vertices = sphere.vertices;
+  for (const auto& t : sphere.triangles)
+    if (sphere.vertices[t[0]].z >= -1e-9 && sphere.vertices[t[1]].z >= -1e-9 &&
+        sphere.vertices[t[2]].z >= -1e-9)
+      dome.triangles.push_back(t);
+  ASSERT_FALSE(check_mesh(dome).closed());
+  ASSERT_TRUE(write_stl(dir.file("dome.stl"), dome).ok());
+  const std::string scan = "surface " + dir.file("dome.stl") +
+                           " --tool ball:6 --pattern scan --stepover 1 --sampling 0.25 ";
+  const auto a = run_swarf(scan + "--zigzag -o " + dir.file("s.nc") + " --csv " +
+                           dir.file("s.csv") + " --report " + dir.file("rep"));
+  ASSERT_EQ(a.status, 0) << a.out;
+  const auto b =
+      run_swarf("dropcut " + dir.file("dome.stl") +
+                " --tool ball:6 --stepover 1 --sampling 0.25 --csv " + dir.file("d.csv"));
+  ASSERT_EQ(b.status, 0) << b.out;
+  const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
+  const std::vector<Vec3> d = read_cl(slurp(dir.file("d.csv")));
+  ASSERT_EQ(s.size(), d.size());
+  ASSERT_GT(s.size(), 1000u);
+  for (std::size_t k = 0; k < s.size(); ++k)
+    ASSERT_NEAR(s[k].z, d[k].z, 1e-9) << "at " << s[k].x << ", " << s[k].y;
+  EXPECT_NE(slurp(dir.file("rep/summary.json")).find("open_mesh"), std::string::npos);
+  // 0.5 mm to leave: over the apex the tip stands 0.5 mm above the dome.
+  const auto c = run_swarf(scan + "--stock-to-leave 0.5 -o " + dir.file("t.nc") + " --csv " +
+                           dir.file("t.csv"));
+  ASSERT_EQ(c.status, 0) << c.out;
+  bool apex = false;
+  for (const Vec3& q : read_cl(slurp(dir.file("t.csv"))))
+    if (std::fabs(q.x) < 1e-9 && std::fabs(q.y) < 1e-9) {
+      apex = true;
+      EXPECT_NEAR(q.z, 8.5, 2e-3);  // the facets sit up to 1.0e-3 below the sphere
+    }
+  EXPECT_TRUE(apex);
+  const auto w = run_swarf("surface " + dir.file("dome.stl") +
+                           " --tool ball:6 --pattern contour -o " + dir.file("w.nc"));
+  EXPECT_EQ(w.status, 2);
+  EXPECT_NE(w.out.find("not a closed solid"), std::string::npos) << w.out;
+  EXPECT_FALSE(std::ifstream(dir.file("w.nc")).good());
+}
+
 TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   TempDir dir;
   ASSERT_TRUE(write_stl(dir.file("dome.stl"), make_sphere({0, 0, 0}, 8.0, 96)).ok());
