@@ -21,11 +21,12 @@ Result<OperationOutput> run_rest(const OperationInput& in) {
   const double pitch = p["pitch"].get<double>();
   // Inflate-then-shrink compares solids: an open surface has no inside to compare.
   const MeshCheck check = check_mesh(stl->mesh);
-  if (check.open_edges > 0)
+  if (check.open_edges > 0) {
     return Status{Error::kBadInput, in.input_path + ": the mesh is not a closed solid (" +
                                         std::to_string(check.open_edges) + " open edges, " +
                                         std::to_string(check.non_manifold_edges) +
                                         " non-manifold edges): rest regions need its inside"};
+  }
   const auto t0 = std::chrono::steady_clock::now();
   auto model = build_trislice(stl->mesh, pitch, {}, ctx);
   if (!model.ok()) return model.status().with_context(in.input_path);
@@ -49,7 +50,7 @@ Result<OperationOutput> run_rest(const OperationInput& in) {
   std::ostringstream csv;
   csv.precision(8);
   csv << "x,y,thickness_mm\n";
-  for (int j = 0; j < map.ny; ++j)
+  for (int j = 0; j < map.ny; ++j) {
     for (int i = 0; i < map.nx; ++i) {
       const double t = map.mm[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
                               static_cast<std::size_t>(i)];
@@ -58,6 +59,7 @@ Result<OperationOutput> run_rest(const OperationInput& in) {
       csv << map.origin.x + (i + 0.5) * map.cell_mm << ',' << map.origin.y + (j + 0.5) * map.cell_mm
           << ',' << t << '\n';
     }
+  }
   out.summary["residue_area_mm2"] = static_cast<double>(cells) * map.cell_mm * map.cell_mm;
   out.csv_override = csv.str();
   out.report_files["rest_map.png"] = png_bytes(thickness_image(map, o.min_thickness_mm));

@@ -23,9 +23,10 @@ std::string cl_csv(const std::vector<std::vector<Vec3>>& lines) {
   std::ostringstream os;
   os.precision(10);
   os << "line,x,y,z\n";
-  for (std::size_t i = 0; i < lines.size(); ++i)
+  for (std::size_t i = 0; i < lines.size(); ++i) {
     for (const Vec3& p : lines[i])
       os << i << ',' << p.x << ',' << p.y << ',' << p.z << '\n';
+  }
   return os.str();
 }
 
@@ -125,7 +126,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   // Open edges mean no inside; non-manifold edges alone (solids touching along an edge)
   // slice as usual.
   const bool solid = check.open_edges == 0;
-  if (!solid && (pattern == "contour" || p["rough_layers"].get<int>() > 0))
+  if (!solid && (pattern == "contour" || p["rough_layers"].get<int>() > 0)) {
     return Status{Error::kBadInput,
                   in.input_path + ": the mesh is not a closed solid (" +
                       std::to_string(check.open_edges) + " open edges, " +
@@ -134,6 +135,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
                       (pattern == "contour" ? "contour paths" : "roughing") +
                       " need its inside; repair it, or use --pattern scan without "
                       "--rough-layers (exact drop-cutter on open meshes)"};
+  }
   const double feed = p["feed"].get<double>(), plunge = p["plunge_feed"].get<double>();
   ScanParams sp;
   sp.direction = dir == "x" ? Axis::kX : Axis::kY;
@@ -180,9 +182,10 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
     return out;
   }
 
-  if (sp.adaptive)
+  if (sp.adaptive) {
     out.summary["adaptive_tolerance_mm"] =
         effective_adaptive_tolerance_mm(sp, model->pitch_mm, tool.radius() + sp.stock_to_leave_mm);
+  }
   const auto t1 = std::chrono::steady_clock::now();
   const TriSliceTop top = TriSliceTop::build(*model, 0.0, 1, ctx.threads);  // bins from the pitch
   const int layers = p["rough_layers"].get<int>();
