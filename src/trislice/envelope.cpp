@@ -226,16 +226,6 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     b1 = std::clamp(static_cast<int>(std::floor((s + rho - smin_) / bin_)), 0, nb_ - 1);
     return true;
   };
-  // Can a disc of radius sqrt(rho2) centred at s, resting on the top of bin b's box (height
-  // top), put its centre above `best`? Squared, so no square root per bin.
-  auto can_beat = [&](int b, double top, double rho2) {
-    const double lo = smin_ + bin_ * b, hi = lo + bin_;
-    const double dx = std::max({lo - s, 0.0, s - hi});
-    const double room = rho2 - dx * dx;
-    if (room < 0.0) return false;
-    const double need = best - top;
-    return need < 0.0 || room > need * need;
-  };
   auto level = [&](long j) { return first_ + static_cast<double>(j) * pitch_; };
   std::uint32_t best_id = kNoHint;
   // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
@@ -314,16 +304,39 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
           pass[npass++] = b;
     }
     if (npass == 0) return;
+    // What the cell tests need of a bin does not depend on the slice: work it out once per
+    // block, relative to s (tlo, thi: the bin's ends; dx2: squared distance to it; off: s
+    // from the bin's centre, where the upper lines are anchored).
+    struct BinAt {
+      double tlo, thi, dx2, off;
+    };
+    BinAt at[4096];
+    for (int m = 0; m < npass; ++m) {
+      const double lo = smin_ + bin_ * pass[m];
+      const double tlo = lo - s, thi = tlo + bin_, dx = std::max({tlo, 0.0, -thi});
+      at[m] = {tlo, thi, dx * dx, s - (lo + 0.5 * bin_)};
+    }
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
       const double rho2 = r * r - dq * dq;
       if (rho2 < 0.0) continue;
-      const double rho = std::sqrt(rho2);  // seed 001 Eq. (1), with (i - j) ds -> y - y_j
+      double rho = -1.0;  // seed 001 Eq. (1), with (i - j) ds -> y - y_j; taken when needed
+      const std::size_t row = static_cast<std::size_t>(j) * nb;
       for (int m = 0; m < npass; ++m) {
-        const int b = pass[m];
-        const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
-        if (!can_beat(b, binmax_[cell], rho2) || !line_can_beat(line_[cell], b, rho, rho2))
-          continue;
+        const std::size_t cell = row + static_cast<std::size_t>(pass[m]);
+        const BinAt& a = at[m];
+        // The bin's box (as can_beat), then its upper line (as line_can_beat).
+        const double room = rho2 - a.dx2;
+        if (room < 0.0) continue;
+        const double need_box = best - binmax_[cell];
+        if (need_box >= 0.0 && room <= need_box * need_box) continue;
+        if (rho < 0.0) rho = std::sqrt(rho2);
+        const double a0 = std::max(a.tlo, -rho), a1 = std::min(a.thi, rho);
+        if (a0 > a1) continue;
+        const Line& L = line_[cell];
+        const double tp = std::clamp(L.k * rho, a0, a1);
+        const double need_line = best - (L.a + L.b * (tp + a.off));
+        if (need_line >= 0.0 && rho2 - tp * tp <= need_line * need_line) continue;
         for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
           // The segment's box first: no point of it rises above top, nor lies nearer than dx
           // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
@@ -333,6 +346,12 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
             if (rho2 - dx * dx <= need * need) continue;
           }
+          // Then the segment's line: a disc centred at height best whose signed distance
+          // from the line is at least rho sits on or above the tangent position, the highest
+          // the disc can rest on any point of the segment (end points included). Three
+          // products instead of drop_on's roots and division; the margin of 1e-9 mm keeps
+          // the test on the safe side of rounding, so the answer does not change.
+          if (g.nz > 0.0 && (best - g.z0) * g.nz + (s - g.s0) * g.ns >= rho + 1e-9) continue;
           drop(k, rho, rho2);
         }
       }
@@ -498,8 +517,15 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const Seg& g = seg_[k];
             const double need = best - g.z;
             if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
-            // drop_on, with the square root only for an edge that can still win.
+            // The distance to the edge's line bounds the distance to the edge from below:
+            // an edge whose line stays beyond the reach it needs cannot win. Products only
+            // (no division); the relative margin keeps rounding on the safe side, so the
+            // answer does not change.
             const double ex = g.x1 - g.x0, ey = g.y1 - g.y0, len2 = ex * ex + ey * ey;
+            const double cross = (p.x - g.x0) * ey - (p.y - g.y0) * ex;
+            const double reach2 = need > 0.0 ? r2 - need * need : r2;
+            if (cross * cross > reach2 * len2 * (1.0 + 1e-9)) continue;
+            // drop_on, with the square root only for an edge that can still win.
             const double t =
                 len2 > 0.0 ? std::clamp(((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2, 0.0, 1.0)
                            : 0.0;
