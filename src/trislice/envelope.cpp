@@ -220,12 +220,6 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   const std::size_t nb = static_cast<std::size_t>(nb_);
   const std::size_t nbc = static_cast<std::size_t>(nbc_);
   const double smax = smin_ + bin_ * nb_;
-  auto bins = [&](double rho, int& b0, int& b1) {
-    if (s + rho < smin_ || s - rho > smax) return false;
-    b0 = std::clamp(static_cast<int>(std::floor((s - rho - smin_) / bin_)), 0, nb_ - 1);
-    b1 = std::clamp(static_cast<int>(std::floor((s + rho - smin_) / bin_)), 0, nb_ - 1);
-    return true;
-  };
   auto level = [&](long j) { return first_ + static_cast<double>(j) * pitch_; };
   std::uint32_t best_id = kNoHint;
   // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
@@ -244,86 +238,80 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double rho2 = r * r - dq * dq;
     if (rho2 >= 0.0) drop(*hint, std::sqrt(rho2), rho2);
   }
-  // Can a disc of squared radius rho2 at s, resting on the top of coarse bin cb, beat best?
-  auto coarse_can_beat = [&](int cb, double top, double rho2) {
-    const double lo = smin_ + bin_ * kCoarse * cb, hi = lo + bin_ * kCoarse;
-    const double dx = std::max({lo - s, 0.0, s - hi});
-    const double room = rho2 - dx * dx;
-    if (room < 0.0) return false;
-    const double need = best - top;
-    return need < 0.0 || room > need * need;
+  // The bins the ball can reach at all, with what every bound test needs of them (relative
+  // to s: tlo, thi the bin's ends, dx2 the squared distance to it, off s from the bin's
+  // centre where the upper lines are anchored). Worked out once per query, not per block and
+  // slice. kCoarse == 1: the blocks' bins are the fine bins.
+  static_assert(kCoarse == 1);
+  if (s + r < smin_ || s - r > smax) return best;
+  const int qb0 = std::clamp(static_cast<int>(std::floor((s - r - smin_) / bin_)), 0, nb_ - 1);
+  const int qb1 = std::clamp(static_cast<int>(std::floor((s + r - smin_) / bin_)), 0, nb_ - 1);
+  const int nq = qb1 - qb0 + 1;
+  struct BinAt {
+    double tlo, thi, dx2, off;
   };
-  // The disc over a bin's upper line: its top is highest where the circle's slope matches the
-  // line's, s' = s + k rho, clamped to the part of the bin the disc reaches.
-  auto line_can_beat = [&](const Line& L, int b, double rho, double rho2) {
-    const double lo = smin_ + bin_ * b;
-    const double a0 = std::max(lo, s - rho), a1 = std::min(lo + bin_, s + rho);
-    if (a0 > a1) return false;
-    const double sp = std::clamp(s + L.k * rho, a0, a1), d = s - sp;
-    // line + sqrt(rho2 - d^2) > best, squared: no square root.
-    const double need = best - (L.a + L.b * (sp - lo - 0.5 * bin_));
-    return need < 0.0 || rho2 - d * d > need * need;
-  };
+  thread_local std::vector<BinAt> at_buf;
+  thread_local std::vector<int> pass_buf;
+  if (at_buf.size() < static_cast<std::size_t>(nq)) {
+    at_buf.resize(static_cast<std::size_t>(nq));
+    pass_buf.resize(static_cast<std::size_t>(nq));
+  }
+  BinAt* const at = at_buf.data();
+  int* const pass = pass_buf.data();
+  for (int m = 0; m < nq; ++m) {
+    const double lo = smin_ + bin_ * (qb0 + m);
+    const double tlo = lo - s, thi = tlo + bin_, dx = std::max({tlo, 0.0, -thi});
+    at[m] = {tlo, thi, dx * dx, s - (lo + 0.5 * bin_)};
+  }
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
     const double l0 = level(j0), l1 = level(j1);
     const double dmin = (q >= l0 && q <= l1) ? 0.0 : std::min(std::fabs(q - l0), std::fabs(q - l1));
     return std::max(0.0, r * r - dmin * dmin);
   };
-  auto coarse_range = [&](double rho, int& c0, int& c1) {
-    int b0 = 0, b1 = -1;
-    if (!bins(rho, b0, b1)) return false;
-    c0 = b0 / static_cast<int>(kCoarse);
-    c1 = b1 / static_cast<int>(kCoarse);
-    return true;
-  };
   auto visit_block = [&](long blk) {
-    const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
+    long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
     if (j0 > j1) return;
-    const double rm2 = reach2(j0, j1);
-    int c0 = 0, c1 = -1;
-    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
-    // Fine bins of this block that can still beat the best centre; only those are opened.
-    int pass[4096];
+    const double rm2 = reach2(j0, j1), rm = std::sqrt(rm2);
+    // Bins of this block that can still beat the best centre (its highest z per bin, then
+    // its upper line per bin, with the reach of its nearest slice); only those are opened.
+    // thr: the least squared radius a slice needs to beat best over any of them.
     int npass = 0;
-    int b0 = 0, b1 = -1;
-    const double rm = std::sqrt(rm2);
-    bins(rm, b0, b1);
-    for (int cb = c0; cb <= c1; ++cb) {
-      if (!coarse_can_beat(
-              cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
-              rm2))
-        continue;
-      for (int b = std::max(b0, cb * static_cast<int>(kCoarse));
-           b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
-           npass < 4096;
-           ++b)
-        if (line_can_beat(
-                blockline_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)], b, rm,
-                rm2))
-          pass[npass++] = b;
+    double thr = kInf;
+    const std::size_t brow = static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(qb0);
+    for (int m = 0; m < nq; ++m) {
+      const BinAt& a = at[m];
+      const double room = rm2 - a.dx2;
+      if (room < 0.0) continue;
+      const double need = best - blockmax_[brow + static_cast<std::size_t>(m)];
+      if (need >= 0.0 && room <= need * need) continue;
+      const double a0 = std::max(a.tlo, -rm), a1 = std::min(a.thi, rm);
+      if (a0 > a1) continue;
+      const Line& L = blockline_[brow + static_cast<std::size_t>(m)];
+      const double tp = std::clamp(L.k * rm, a0, a1);
+      const double need_line = best - (L.a + L.b * (tp + a.off));
+      if (need_line >= 0.0 && rm2 - tp * tp <= need_line * need_line) continue;
+      pass[npass++] = m;
+      thr = std::min(thr, a.dx2 + (need > 0.0 ? need * need : 0.0));
     }
     if (npass == 0) return;
-    // What the cell tests need of a bin does not depend on the slice: work it out once per
-    // block, relative to s (tlo, thi: the bin's ends; dx2: squared distance to it; off: s
-    // from the bin's centre, where the upper lines are anchored).
-    struct BinAt {
-      double tlo, thi, dx2, off;
-    };
-    BinAt at[4096];
-    for (int m = 0; m < npass; ++m) {
-      const double lo = smin_ + bin_ * pass[m];
-      const double tlo = lo - s, thi = tlo + bin_, dx = std::max({tlo, 0.0, -thi});
-      at[m] = {tlo, thi, dx * dx, s - (lo + 0.5 * bin_)};
-    }
+    // A slice beats best over bin m only if rho^2 >= dx2 + (best - block max)^2, so only the
+    // slices within sqrt(r^2 - thr) of q can (best only grows while the block is visited, so
+    // the range stays a superset). The slices of a block far from q mostly fall outside.
+    const double span2 = r * r - thr;
+    if (span2 < 0.0) return;
+    const double span = std::sqrt(span2);
+    j0 = std::max(j0, static_cast<long>(std::ceil((q - span - first_) / pitch_ - 1e-9)));
+    j1 = std::min(j1, static_cast<long>(std::floor((q + span - first_) / pitch_ + 1e-9)));
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
       const double rho2 = r * r - dq * dq;
       if (rho2 < 0.0) continue;
       double rho = -1.0;  // seed 001 Eq. (1), with (i - j) ds -> y - y_j; taken when needed
       const std::size_t row = static_cast<std::size_t>(j) * nb;
-      for (int m = 0; m < npass; ++m) {
-        const std::size_t cell = row + static_cast<std::size_t>(pass[m]);
+      for (int pm = 0; pm < npass; ++pm) {
+        const int m = pass[pm];
+        const std::size_t cell = row + static_cast<std::size_t>(qb0 + m);
         const BinAt& a = at[m];
         // The bin's box (as can_beat), then its upper line (as line_can_beat).
         const double room = rho2 - a.dx2;
@@ -362,12 +350,13 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const long j0 = std::max(jlo, sup * SB), j1 = std::min(jhi, sup * SB + SB - 1);
     if (j0 > j1) return;
     const double rm2 = reach2(j0, j1);
-    int c0 = 0, c1 = -1;
-    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
     bool any = false;
-    for (int cb = c0; cb <= c1 && !any; ++cb)
-      any = coarse_can_beat(
-          cb, supermax_[static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(cb)], rm2);
+    const std::size_t srow = static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(qb0);
+    for (int m = 0; m < nq && !any; ++m) {
+      const double room = rm2 - at[m].dx2;
+      const double need = best - supermax_[srow + static_cast<std::size_t>(m)];
+      any = room >= 0.0 && (need < 0.0 || room > need * need);
+    }
     if (!any) return;
     // Blocks of this super-block, nearest to q first.
     const long b_lo = j0 / B, b_hi = j1 / B;
