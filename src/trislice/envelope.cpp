@@ -63,7 +63,8 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
           nz = dv;
           s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
         }
-        if (nz < -1e-12 * std::hypot(du, dv)) continue;
+        // nz < -1e-12 |(du, dv)|, squared: hypot is slow and this runs for every edge.
+        if (nz < 0.0 && nz * nz > 1e-24 * (du * du + dv * dv)) continue;
         if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
         // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
         const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
@@ -96,7 +97,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   // the segments of a bin, and of consecutive bins of a slice, from one run of memory.
   for (std::size_t j = 0; j < e.n_; ++j)
     for (const Seg& s : per[j])
-      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
+      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b)
         ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
   for (std::size_t c = 0; c < e.n_ * nb; ++c)
     e.start_[c + 1] += e.start_[c];
@@ -105,7 +106,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
     for (const Seg& s : per[j]) {
-      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
+      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.seg_[fill[c]] = s;
         e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);

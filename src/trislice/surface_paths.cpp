@@ -198,6 +198,19 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
     auto eval = [&](std::size_t k, const ScanHint& from) {
       const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
       Sample out{{}, from};
+      if (clip_z < kInf) {
+        // Roughing layers above the stock: the hinted edges give a lower bound of the centre
+        // height; when it already lifts the tip to the clip height, the point is the clip
+        // height whatever the full search would add, so the search is skipped (exact).
+        const Axis secondary = along_x ? Axis::kX : Axis::kY;
+        const double lb = std::max({top.family(primary).hint_height(xy, R, from.primary),
+                                    top.family(secondary).hint_height(xy, R, from.secondary),
+                                    top.levels().hint_height(xy, R, from.level)});
+        if (lb - tool_radius_mm >= clip_z) {
+          out.p = {xy.x, xy.y, clip_z};
+          return out;
+        }
+      }
       const double c = top.centre_height(xy, R, primary, &out.hint);
       const double z = c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z;
       out.p = {xy.x, xy.y, std::min(z, clip_z)};
