@@ -382,6 +382,11 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
   LevelEnvelope e;
   e.cell_ = cell_mm > 0.0 ? cell_mm : 1.0;
   const long base = fam.pitch_mm > 0.0 ? std::lround(fam.first_level / fam.pitch_mm) : 0;
+  // Ring edges as end points first (the cells they cross), stored as start and direction.
+  struct Raw {
+    double x0, y0, x1, y1, z;
+  };
+  std::vector<Raw> raw;
   Box2 box;
   for (std::size_t j = 0; j < fam.size(); ++j) {
     const long k = base + static_cast<long>(j);
@@ -390,16 +395,16 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
     for (const Ring& ring : fam.slices[j].rings)
       for (std::size_t q = 0; q < ring.size(); ++q) {
         const Vec2 a = ring[q], b = ring[(q + 1) % ring.size()];
-        e.seg_.push_back({a.x, a.y, b.x, b.y, z});
+        raw.push_back({a.x, a.y, b.x, b.y, z});
         box.add(a);
       }
   }
-  if (e.seg_.empty()) return e;
+  if (raw.empty()) return e;
   e.origin_ = box.min;
   e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
   e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
   const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
-  auto cells = [&](const Seg& g, auto&& fn) {
+  auto cells = [&](const Raw& g, auto&& fn) {
     const int i0 = static_cast<int>(std::floor((std::min(g.x0, g.x1) - e.origin_.x) / e.cell_));
     const int i1 = static_cast<int>(std::floor((std::max(g.x0, g.x1) - e.origin_.x) / e.cell_));
     const int j0 = static_cast<int>(std::floor((std::min(g.y0, g.y1) - e.origin_.y) / e.cell_));
@@ -410,26 +415,28 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
            static_cast<std::size_t>(i));
   };
   e.start_.assign(ncell + 1, 0);
-  for (const Seg& g : e.seg_)
+  for (const Raw& g : raw)
     cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
   for (std::size_t c = 0; c < ncell; ++c)
     e.start_[c + 1] += e.start_[c];
   std::vector<std::uint32_t> items(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
-  for (std::size_t k = 0; k < e.seg_.size(); ++k)
-    cells(e.seg_[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
+  for (std::size_t k = 0; k < raw.size(); ++k)
+    cells(raw[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
   // Highest level first in every cell (ties by index: deterministic).
   for (std::size_t c = 0; c < ncell; ++c)
     std::sort(items.begin() + e.start_[c], items.begin() + e.start_[c + 1],
               [&](std::uint32_t a, std::uint32_t b) {
-                return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
+                return raw[a].z != raw[b].z ? raw[a].z > raw[b].z : a < b;
               });
   // The segments themselves in that order, so a query reads a cell from one run of memory.
-  std::vector<Seg> inl(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k)
-    inl[k] = e.seg_[items[k]];
-  e.nseg_ = e.seg_.size();
-  e.seg_ = std::move(inl);
+  // Direction stored as end - start: the same doubles the queries computed per edge before.
+  e.seg_.resize(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Raw& g = raw[items[k]];
+    e.seg_[k] = {g.x0, g.y0, g.x1 - g.x0, g.y1 - g.y0, g.z};
+  }
+  e.nseg_ = raw.size();
   // The highest level of each cell in a small array of its own: most cells a query walks
   // are ruled out by it without touching their segments.
   e.cellmax_.assign(ncell, -kInf);
@@ -457,7 +464,7 @@ std::size_t LevelEnvelope::memory_bytes() const {
 }
 
 double LevelEnvelope::drop_on(const Seg& g, Vec2 p, double r2) {
-  const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+  const double ex = g.ex, ey = g.ey;
   const double len2 = ex * ex + ey * ey;
   double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
@@ -511,7 +518,7 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             // an edge whose line stays beyond the reach it needs cannot win. Products only
             // (no division); the relative margin keeps rounding on the safe side, so the
             // answer does not change.
-            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0, len2 = ex * ex + ey * ey;
+            const double ex = g.ex, ey = g.ey, len2 = ex * ex + ey * ey;
             const double cross = (p.x - g.x0) * ey - (p.y - g.y0) * ex;
             const double reach2 = need > 0.0 ? r2 - need * need : r2;
             if (cross * cross > reach2 * len2 * (1.0 + 1e-9)) continue;

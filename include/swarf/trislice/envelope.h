@@ -97,7 +97,7 @@ class LevelEnvelope {
 
  private:
   struct Seg {
-    double x0, y0, x1, y1, z;
+    double x0, y0, ex, ey, z;  ///< start, end - start (as the queries use it), level
   };
   static double drop_on(const Seg& g, Vec2 p, double r2);
   std::size_t nseg_ = 0;
