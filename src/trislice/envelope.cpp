@@ -89,7 +89,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   for (const auto& v : per)
     e.nseg_ += v.size();
   e.start_.assign(e.n_ * nb + 1, 0);
-  e.binmax_.assign(e.n_ * nb, -kInf);
+  std::vector<double> binmax(e.n_ * nb, -kInf);
   auto bin_of = [&](double s) {
     return std::clamp(static_cast<int>(std::floor((s - e.smin_) / e.bin_)), 0, e.nb_ - 1);
   };
@@ -110,7 +110,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.seg_[fill[c]] = s;
         e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
-        e.binmax_[c] = std::max({e.binmax_[c], s.z0, s.z1});
+        binmax[c] = std::max({binmax[c], s.z0, s.z1});
       }
     }
     std::vector<Seg>().swap(per[j]);
@@ -118,7 +118,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   // Upper lines per (slice, bin): the slope of the highest edges across the bin, raised until
   // every edge end inside the bin (clipped to it) lies under the line. Edges are straight, so
   // their ends bound them.
-  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0});
+  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0, -kInf});
   for (std::size_t c = 0; c < e.n_ * nb; ++c) {
     if (e.start_[c] == e.start_[c + 1]) continue;
     const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
@@ -139,7 +139,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       const double z1 = g.nz > 0.0 && g.s1 > hi ? clip(g, hi) : g.z1;
       a = std::max({a, z0 - b * (s0 - mid), z1 - b * (s1 - mid)});
     }
-    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b)};
+    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b), binmax[c]};
   }
   // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
   // kBlock^2 slices: a query rejects far slices wholesale with few checks.
@@ -147,19 +147,19 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   const std::size_t nbc = static_cast<std::size_t>(e.nbc_);
   const std::size_t nblock = (e.n_ + kBlock - 1) / kBlock;
   const std::size_t nsuper = (nblock + kBlock - 1) / kBlock;
-  e.blockmax_.assign(nblock * nbc, -kInf);
+  std::vector<double> blockmax(nblock * nbc, -kInf);
   e.supermax_.assign(nsuper * nbc, -kInf);
   for (std::size_t j = 0; j < e.n_; ++j)
     for (std::size_t b = 0; b < nb; ++b) {
-      const double v = e.binmax_[j * nb + b];
-      double& m = e.blockmax_[(j / kBlock) * nbc + b / kCoarse];
+      const double v = binmax[j * nb + b];
+      double& m = blockmax[(j / kBlock) * nbc + b / kCoarse];
       m = std::max(m, v);
       double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
       sm = std::max(sm, v);
     }
   // Block lines per (block, bin): one slope for the block (that of its highest line ends),
   // raised over every slice's line: a_j + b_j t <= a + b t + |b_j - b| w / 2 on the bin.
-  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0});
+  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0, -kInf});
   for (std::size_t blk = 0; blk < nblock; ++blk)
     for (std::size_t b = 0; b < nb; ++b) {
       double zl = -kInf, zh = -kInf;
@@ -169,6 +169,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         zl = std::max(zl, L.a - 0.5 * e.bin_ * L.b);
         zh = std::max(zh, L.a + 0.5 * e.bin_ * L.b);
       }
+      e.blockline_[blk * nb + b].top = blockmax[blk * nbc + b / kCoarse];
       if (!(zl > -kInf)) continue;
       const double slope = (zh - zl) / e.bin_;
       double a = -kInf;
@@ -176,7 +177,8 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         const Line& L = e.line_[j * nb + b];
         if (L.a > -kInf) a = std::max(a, L.a + std::fabs(L.b - slope) * 0.5 * e.bin_);
       }
-      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope)};
+      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope),
+                                    blockmax[blk * nbc + b / kCoarse]};
     }
   return e;
 }
@@ -203,8 +205,7 @@ double SliceEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
 
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
-         start_.size() * sizeof(std::uint32_t) +
-         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double) +
+         start_.size() * sizeof(std::uint32_t) + supermax_.size() * sizeof(double) +
          (line_.size() + blockline_.size()) * sizeof(Line);
 }
 
@@ -284,11 +285,11 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
       const BinAt& a = at[m];
       const double room = rm2 - a.dx2;
       if (room < 0.0) continue;
-      const double need = best - blockmax_[brow + static_cast<std::size_t>(m)];
+      const Line& L = blockline_[brow + static_cast<std::size_t>(m)];
+      const double need = best - L.top;
       if (need >= 0.0 && room <= need * need) continue;
       const double a0 = std::max(a.tlo, -rm), a1 = std::min(a.thi, rm);
       if (a0 > a1) continue;
-      const Line& L = blockline_[brow + static_cast<std::size_t>(m)];
       const double tp = std::clamp(L.k * rm, a0, a1);
       const double need_line = best - (L.a + L.b * (tp + a.off));
       if (need_line >= 0.0 && rm2 - tp * tp <= need_line * need_line) continue;
@@ -317,12 +318,12 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
         // The bin's box (as can_beat), then its upper line (as line_can_beat).
         const double room = rho2 - a.dx2;
         if (room < 0.0) continue;
-        const double need_box = best - binmax_[cell];
+        const Line& L = line_[cell];
+        const double need_box = best - L.top;
         if (need_box >= 0.0 && room <= need_box * need_box) continue;
         if (rho < 0.0) rho = std::sqrt(rho2);
         const double a0 = std::max(a.tlo, -rho), a1 = std::min(a.thi, rho);
         if (a0 > a1) continue;
-        const Line& L = line_[cell];
         const double tp = std::clamp(L.k * rho, a0, a1);
         const double need_line = best - (L.a + L.b * (tp + a.off));
         if (need_line >= 0.0 && rho2 - tp * tp <= need_line * need_line) continue;
