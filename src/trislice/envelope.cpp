@@ -253,10 +253,11 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     double tlo, thi, dx2, off;
   };
   thread_local std::vector<BinAt> at_buf;
-  thread_local std::vector<int> pass_buf;
+  thread_local std::vector<int> pass_buf, ord_buf;
   if (at_buf.size() < static_cast<std::size_t>(nq)) {
     at_buf.resize(static_cast<std::size_t>(nq));
     pass_buf.resize(static_cast<std::size_t>(nq));
+    ord_buf.resize(static_cast<std::size_t>(nq));
   }
   BinAt* const at = at_buf.data();
   int* const pass = pass_buf.data();
@@ -264,6 +265,16 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double lo = smin_ + bin_ * (qb0 + m);
     const double tlo = lo - s, thi = tlo + bin_, dx = std::max({tlo, 0.0, -thi});
     at[m] = {tlo, thi, dx * dx, s - (lo + 0.5 * bin_)};
+  }
+  // The bins nearest to s first (dx2 falls towards s and rises past it, so a merge from the
+  // bin holding s): a block's bins within its reach are then a prefix of this order, and the
+  // scan over them stops at the first bin out of reach instead of testing every bin.
+  int* const ord = ord_buf.data();
+  {
+    int lo = std::clamp(static_cast<int>(std::floor((s - smin_) / bin_)) - qb0, 0, nq - 1);
+    int hi = lo + 1;
+    for (int o = 0; o < nq; ++o)
+      ord[o] = hi >= nq || (lo >= 0 && at[lo].dx2 <= at[hi].dx2) ? lo-- : hi++;
   }
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
@@ -281,10 +292,11 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     int npass = 0;
     double thr = kInf;
     const std::size_t brow = static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(qb0);
-    for (int m = 0; m < nq; ++m) {
+    for (int o = 0; o < nq; ++o) {
+      const int m = ord[o];
       const BinAt& a = at[m];
       const double room = rm2 - a.dx2;
-      if (room < 0.0) continue;
+      if (room < 0.0) break;  // and so are the bins after it in this order
       const Line& L = blockline_[brow + static_cast<std::size_t>(m)];
       const double need = best - L.top;
       if (need >= 0.0 && room <= need * need) continue;
@@ -354,8 +366,10 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double rm2 = reach2(j0, j1);
     bool any = false;
     const std::size_t srow = static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(qb0);
-    for (int m = 0; m < nq && !any; ++m) {
+    for (int o = 0; o < nq && !any; ++o) {
+      const int m = ord[o];
       const double room = rm2 - at[m].dx2;
+      if (room < 0.0) break;
       const double need = best - supermax_[srow + static_cast<std::size_t>(m)];
       any = room >= 0.0 && (need < 0.0 || room > need * need);
     }
