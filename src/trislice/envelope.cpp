@@ -317,22 +317,30 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double span = std::sqrt(span2);
     j0 = std::max(j0, static_cast<long>(std::ceil((q - span - first_) / pitch_ - 1e-9)));
     j1 = std::min(j1, static_cast<long>(std::floor((q + span - first_) / pitch_ + 1e-9)));
+    if (j0 > j1) return;
+    // Squared disc radius per slice (seed 001 Eq. (1), with (i - j) ds -> y - y_j); the root
+    // only once a cell of the slice passes its box test. Bins outer, slices inner: a block
+    // passes one to three bins, so the inner loop runs long and its exit is predictable.
+    double rho2s[kBlock], rhos[kBlock];
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
-      const double rho2 = r * r - dq * dq;
-      if (rho2 < 0.0) continue;
-      double rho = -1.0;  // seed 001 Eq. (1), with (i - j) ds -> y - y_j; taken when needed
-      const std::size_t row = static_cast<std::size_t>(j) * nb;
-      for (int pm = 0; pm < npass; ++pm) {
-        const int m = pass[pm];
-        const std::size_t cell = row + static_cast<std::size_t>(qb0 + m);
-        const BinAt& a = at[m];
+      rho2s[j - j0] = r * r - dq * dq;
+      rhos[j - j0] = -1.0;
+    }
+    for (int pm = 0; pm < npass; ++pm) {
+      const int m = pass[pm];
+      const BinAt& a = at[m];
+      for (long j = j0; j <= j1; ++j) {
+        const double rho2 = rho2s[j - j0];
+        const std::size_t cell =
+            static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(qb0 + m);
         // The bin's box (as can_beat), then its upper line (as line_can_beat).
         const double room = rho2 - a.dx2;
-        if (room < 0.0) continue;
+        if (room < 0.0) continue;  // also rho2 < 0: the slice is out of reach
         const Line& L = line_[cell];
         const double need_box = best - L.top;
         if (need_box >= 0.0 && room <= need_box * need_box) continue;
+        double& rho = rhos[j - j0];
         if (rho < 0.0) rho = std::sqrt(rho2);
         const double a0 = std::max(a.tlo, -rho), a1 = std::min(a.thi, rho);
         if (a0 > a1) continue;
