@@ -208,7 +208,7 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   std::size_t n = 0;
   for (const auto& l : *lines)
     n += l.size();
-  auto fin = scan_finishing_from_lines(*model, top, tool, sp, std::move(lines).value());
+  auto fin = scan_finishing_from_lines(*model, top, tool, sp, std::move(lines).value(), ctx);
   if (!fin.ok()) return fin.status().with_context(in.input_path);
   out.summary["finishing_s"] = seconds_since(t2);
   out.summary["cl_points"] = n;

@@ -63,7 +63,8 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
           nz = dv;
           s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
         }
-        if (nz < -1e-12 * std::hypot(du, dv)) continue;
+        // nz < -1e-12 |(du, dv)|, squared: hypot is slow and this runs for every edge.
+        if (nz < 0.0 && nz * nz > 1e-24 * (du * du + dv * dv)) continue;
         if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
         // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
         const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
@@ -88,7 +89,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   for (const auto& v : per)
     e.nseg_ += v.size();
   e.start_.assign(e.n_ * nb + 1, 0);
-  e.binmax_.assign(e.n_ * nb, -kInf);
+  std::vector<double> binmax(e.n_ * nb, -kInf);
   auto bin_of = [&](double s) {
     return std::clamp(static_cast<int>(std::floor((s - e.smin_) / e.bin_)), 0, e.nb_ - 1);
   };
@@ -96,7 +97,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   // the segments of a bin, and of consecutive bins of a slice, from one run of memory.
   for (std::size_t j = 0; j < e.n_; ++j)
     for (const Seg& s : per[j])
-      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b)
+      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b)
         ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
   for (std::size_t c = 0; c < e.n_ * nb; ++c)
     e.start_[c + 1] += e.start_[c];
@@ -105,11 +106,11 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
     for (const Seg& s : per[j]) {
-      for (int b = bin_of(s.s0); b <= bin_of(s.s1); ++b) {
+      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.seg_[fill[c]] = s;
         e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
-        e.binmax_[c] = std::max({e.binmax_[c], s.z0, s.z1});
+        binmax[c] = std::max({binmax[c], s.z0, s.z1});
       }
     }
     std::vector<Seg>().swap(per[j]);
@@ -117,7 +118,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   // Upper lines per (slice, bin): the slope of the highest edges across the bin, raised until
   // every edge end inside the bin (clipped to it) lies under the line. Edges are straight, so
   // their ends bound them.
-  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0});
+  e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0, -kInf});
   for (std::size_t c = 0; c < e.n_ * nb; ++c) {
     if (e.start_[c] == e.start_[c + 1]) continue;
     const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
@@ -138,7 +139,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       const double z1 = g.nz > 0.0 && g.s1 > hi ? clip(g, hi) : g.z1;
       a = std::max({a, z0 - b * (s0 - mid), z1 - b * (s1 - mid)});
     }
-    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b)};
+    e.line_[c] = {a, b, b / std::sqrt(1.0 + b * b), binmax[c]};
   }
   // Coarse bins (kCoarse fine bins) per block of kBlock slices and per super-block of
   // kBlock^2 slices: a query rejects far slices wholesale with few checks.
@@ -146,19 +147,19 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   const std::size_t nbc = static_cast<std::size_t>(e.nbc_);
   const std::size_t nblock = (e.n_ + kBlock - 1) / kBlock;
   const std::size_t nsuper = (nblock + kBlock - 1) / kBlock;
-  e.blockmax_.assign(nblock * nbc, -kInf);
+  std::vector<double> blockmax(nblock * nbc, -kInf);
   e.supermax_.assign(nsuper * nbc, -kInf);
   for (std::size_t j = 0; j < e.n_; ++j)
     for (std::size_t b = 0; b < nb; ++b) {
-      const double v = e.binmax_[j * nb + b];
-      double& m = e.blockmax_[(j / kBlock) * nbc + b / kCoarse];
+      const double v = binmax[j * nb + b];
+      double& m = blockmax[(j / kBlock) * nbc + b / kCoarse];
       m = std::max(m, v);
       double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
       sm = std::max(sm, v);
     }
   // Block lines per (block, bin): one slope for the block (that of its highest line ends),
   // raised over every slice's line: a_j + b_j t <= a + b t + |b_j - b| w / 2 on the bin.
-  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0});
+  e.blockline_.assign(nblock * nb, Line{-kInf, 0.0, 0.0, -kInf});
   for (std::size_t blk = 0; blk < nblock; ++blk)
     for (std::size_t b = 0; b < nb; ++b) {
       double zl = -kInf, zh = -kInf;
@@ -168,6 +169,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         zl = std::max(zl, L.a - 0.5 * e.bin_ * L.b);
         zh = std::max(zh, L.a + 0.5 * e.bin_ * L.b);
       }
+      e.blockline_[blk * nb + b].top = blockmax[blk * nbc + b / kCoarse];
       if (!(zl > -kInf)) continue;
       const double slope = (zh - zl) / e.bin_;
       double a = -kInf;
@@ -175,7 +177,8 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
         const Line& L = e.line_[j * nb + b];
         if (L.a > -kInf) a = std::max(a, L.a + std::fabs(L.b - slope) * 0.5 * e.bin_);
       }
-      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope)};
+      e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope),
+                                    blockmax[blk * nbc + b / kCoarse]};
     }
   return e;
 }
@@ -202,8 +205,7 @@ double SliceEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
 
 std::size_t SliceEnvelope::memory_bytes() const {
   return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
-         start_.size() * sizeof(std::uint32_t) +
-         (binmax_.size() + blockmax_.size() + supermax_.size()) * sizeof(double) +
+         start_.size() * sizeof(std::uint32_t) + supermax_.size() * sizeof(double) +
          (line_.size() + blockline_.size()) * sizeof(Line);
 }
 
@@ -220,22 +222,6 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
   const std::size_t nb = static_cast<std::size_t>(nb_);
   const std::size_t nbc = static_cast<std::size_t>(nbc_);
   const double smax = smin_ + bin_ * nb_;
-  auto bins = [&](double rho, int& b0, int& b1) {
-    if (s + rho < smin_ || s - rho > smax) return false;
-    b0 = std::clamp(static_cast<int>(std::floor((s - rho - smin_) / bin_)), 0, nb_ - 1);
-    b1 = std::clamp(static_cast<int>(std::floor((s + rho - smin_) / bin_)), 0, nb_ - 1);
-    return true;
-  };
-  // Can a disc of radius sqrt(rho2) centred at s, resting on the top of bin b's box (height
-  // top), put its centre above `best`? Squared, so no square root per bin.
-  auto can_beat = [&](int b, double top, double rho2) {
-    const double lo = smin_ + bin_ * b, hi = lo + bin_;
-    const double dx = std::max({lo - s, 0.0, s - hi});
-    const double room = rho2 - dx * dx;
-    if (room < 0.0) return false;
-    const double need = best - top;
-    return need < 0.0 || room > need * need;
-  };
   auto level = [&](long j) { return first_ + static_cast<double>(j) * pitch_; };
   std::uint32_t best_id = kNoHint;
   // A disc of radius rho dropped at s onto segment id: end points, then the interior (contact
@@ -254,76 +240,113 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const double rho2 = r * r - dq * dq;
     if (rho2 >= 0.0) drop(*hint, std::sqrt(rho2), rho2);
   }
-  // Can a disc of squared radius rho2 at s, resting on the top of coarse bin cb, beat best?
-  auto coarse_can_beat = [&](int cb, double top, double rho2) {
-    const double lo = smin_ + bin_ * kCoarse * cb, hi = lo + bin_ * kCoarse;
-    const double dx = std::max({lo - s, 0.0, s - hi});
-    const double room = rho2 - dx * dx;
-    if (room < 0.0) return false;
-    const double need = best - top;
-    return need < 0.0 || room > need * need;
+  // The bins the ball can reach at all, with what every bound test needs of them (relative
+  // to s: tlo, thi the bin's ends, dx2 the squared distance to it, off s from the bin's
+  // centre where the upper lines are anchored). Worked out once per query, not per block and
+  // slice. kCoarse == 1: the blocks' bins are the fine bins.
+  static_assert(kCoarse == 1);
+  if (s + r < smin_ || s - r > smax) return best;
+  const int qb0 = std::clamp(static_cast<int>(std::floor((s - r - smin_) / bin_)), 0, nb_ - 1);
+  const int qb1 = std::clamp(static_cast<int>(std::floor((s + r - smin_) / bin_)), 0, nb_ - 1);
+  const int nq = qb1 - qb0 + 1;
+  struct BinAt {
+    double tlo, thi, dx2, off;
   };
-  // The disc over a bin's upper line: its top is highest where the circle's slope matches the
-  // line's, s' = s + k rho, clamped to the part of the bin the disc reaches.
-  auto line_can_beat = [&](const Line& L, int b, double rho, double rho2) {
-    const double lo = smin_ + bin_ * b;
-    const double a0 = std::max(lo, s - rho), a1 = std::min(lo + bin_, s + rho);
-    if (a0 > a1) return false;
-    const double sp = std::clamp(s + L.k * rho, a0, a1), d = s - sp;
-    // line + sqrt(rho2 - d^2) > best, squared: no square root.
-    const double need = best - (L.a + L.b * (sp - lo - 0.5 * bin_));
-    return need < 0.0 || rho2 - d * d > need * need;
-  };
+  thread_local std::vector<BinAt> at_buf;
+  thread_local std::vector<int> pass_buf, ord_buf;
+  if (at_buf.size() < static_cast<std::size_t>(nq)) {
+    at_buf.resize(static_cast<std::size_t>(nq));
+    pass_buf.resize(static_cast<std::size_t>(nq));
+    ord_buf.resize(static_cast<std::size_t>(nq));
+  }
+  BinAt* const at = at_buf.data();
+  int* const pass = pass_buf.data();
+  for (int m = 0; m < nq; ++m) {
+    const double lo = smin_ + bin_ * (qb0 + m);
+    const double tlo = lo - s, thi = tlo + bin_, dx = std::max({tlo, 0.0, -thi});
+    at[m] = {tlo, thi, dx * dx, s - (lo + 0.5 * bin_)};
+  }
+  // The bins nearest to s first (dx2 falls towards s and rises past it, so a merge from the
+  // bin holding s): a block's bins within its reach are then a prefix of this order, and the
+  // scan over them stops at the first bin out of reach instead of testing every bin.
+  int* const ord = ord_buf.data();
+  {
+    int lo = std::clamp(static_cast<int>(std::floor((s - smin_) / bin_)) - qb0, 0, nq - 1);
+    int hi = lo + 1;
+    for (int o = 0; o < nq; ++o)
+      ord[o] = hi >= nq || (lo >= 0 && at[lo].dx2 <= at[hi].dx2) ? lo-- : hi++;
+  }
   // Slices [j0, j1] and the squared reach of the disc on the nearest of them.
   auto reach2 = [&](long j0, long j1) {
     const double l0 = level(j0), l1 = level(j1);
     const double dmin = (q >= l0 && q <= l1) ? 0.0 : std::min(std::fabs(q - l0), std::fabs(q - l1));
     return std::max(0.0, r * r - dmin * dmin);
   };
-  auto coarse_range = [&](double rho, int& c0, int& c1) {
-    int b0 = 0, b1 = -1;
-    if (!bins(rho, b0, b1)) return false;
-    c0 = b0 / static_cast<int>(kCoarse);
-    c1 = b1 / static_cast<int>(kCoarse);
-    return true;
-  };
   auto visit_block = [&](long blk) {
-    const long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
+    long j0 = std::max(jlo, blk * B), j1 = std::min(jhi, blk * B + B - 1);
     if (j0 > j1) return;
-    const double rm2 = reach2(j0, j1);
-    int c0 = 0, c1 = -1;
-    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
-    // Fine bins of this block that can still beat the best centre; only those are opened.
-    int pass[4096];
+    const double rm2 = reach2(j0, j1), rm = std::sqrt(rm2);
+    // Bins of this block that can still beat the best centre (its highest z per bin, then
+    // its upper line per bin, with the reach of its nearest slice); only those are opened.
+    // thr: the least squared radius a slice needs to beat best over any of them.
     int npass = 0;
-    int b0 = 0, b1 = -1;
-    const double rm = std::sqrt(rm2);
-    bins(rm, b0, b1);
-    for (int cb = c0; cb <= c1; ++cb) {
-      if (!coarse_can_beat(
-              cb, blockmax_[static_cast<std::size_t>(blk) * nbc + static_cast<std::size_t>(cb)],
-              rm2))
-        continue;
-      for (int b = std::max(b0, cb * static_cast<int>(kCoarse));
-           b <= std::min(b1, cb * static_cast<int>(kCoarse) + static_cast<int>(kCoarse) - 1) &&
-           npass < 4096;
-           ++b)
-        if (line_can_beat(
-                blockline_[static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(b)], b, rm,
-                rm2))
-          pass[npass++] = b;
+    double thr = kInf;
+    const std::size_t brow = static_cast<std::size_t>(blk) * nb + static_cast<std::size_t>(qb0);
+    for (int o = 0; o < nq; ++o) {
+      const int m = ord[o];
+      const BinAt& a = at[m];
+      const double room = rm2 - a.dx2;
+      if (room < 0.0) break;  // and so are the bins after it in this order
+      const Line& L = blockline_[brow + static_cast<std::size_t>(m)];
+      const double need = best - L.top;
+      if (need >= 0.0 && room <= need * need) continue;
+      const double a0 = std::max(a.tlo, -rm), a1 = std::min(a.thi, rm);
+      if (a0 > a1) continue;
+      const double tp = std::clamp(L.k * rm, a0, a1);
+      const double need_line = best - (L.a + L.b * (tp + a.off));
+      if (need_line >= 0.0 && rm2 - tp * tp <= need_line * need_line) continue;
+      pass[npass++] = m;
+      thr = std::min(thr, a.dx2 + (need > 0.0 ? need * need : 0.0));
     }
     if (npass == 0) return;
+    // A slice beats best over bin m only if rho^2 >= dx2 + (best - block max)^2, so only the
+    // slices within sqrt(r^2 - thr) of q can (best only grows while the block is visited, so
+    // the range stays a superset). The slices of a block far from q mostly fall outside.
+    const double span2 = r * r - thr;
+    if (span2 < 0.0) return;
+    const double span = std::sqrt(span2);
+    j0 = std::max(j0, static_cast<long>(std::ceil((q - span - first_) / pitch_ - 1e-9)));
+    j1 = std::min(j1, static_cast<long>(std::floor((q + span - first_) / pitch_ + 1e-9)));
+    if (j0 > j1) return;
+    // Squared disc radius per slice (seed 001 Eq. (1), with (i - j) ds -> y - y_j); the root
+    // only once a cell of the slice passes its box test. Bins outer, slices inner: a block
+    // passes one to three bins, so the inner loop runs long and its exit is predictable.
+    double rho2s[kBlock], rhos[kBlock];
     for (long j = j0; j <= j1; ++j) {
       const double dq = q - level(j);
-      const double rho2 = r * r - dq * dq;
-      if (rho2 < 0.0) continue;
-      const double rho = std::sqrt(rho2);  // seed 001 Eq. (1), with (i - j) ds -> y - y_j
-      for (int m = 0; m < npass; ++m) {
-        const int b = pass[m];
-        const std::size_t cell = static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(b);
-        if (!can_beat(b, binmax_[cell], rho2) || !line_can_beat(line_[cell], b, rho, rho2))
-          continue;
+      rho2s[j - j0] = r * r - dq * dq;
+      rhos[j - j0] = -1.0;
+    }
+    for (int pm = 0; pm < npass; ++pm) {
+      const int m = pass[pm];
+      const BinAt& a = at[m];
+      for (long j = j0; j <= j1; ++j) {
+        const double rho2 = rho2s[j - j0];
+        const std::size_t cell =
+            static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(qb0 + m);
+        // The bin's box (as can_beat), then its upper line (as line_can_beat).
+        const double room = rho2 - a.dx2;
+        if (room < 0.0) continue;  // also rho2 < 0: the slice is out of reach
+        const Line& L = line_[cell];
+        const double need_box = best - L.top;
+        if (need_box >= 0.0 && room <= need_box * need_box) continue;
+        double& rho = rhos[j - j0];
+        if (rho < 0.0) rho = std::sqrt(rho2);
+        const double a0 = std::max(a.tlo, -rho), a1 = std::min(a.thi, rho);
+        if (a0 > a1) continue;
+        const double tp = std::clamp(L.k * rho, a0, a1);
+        const double need_line = best - (L.a + L.b * (tp + a.off));
+        if (need_line >= 0.0 && rho2 - tp * tp <= need_line * need_line) continue;
         for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
           // The segment's box first: no point of it rises above top, nor lies nearer than dx
           // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
@@ -333,6 +356,12 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
             if (rho2 - dx * dx <= need * need) continue;
           }
+          // Then the segment's line: a disc centred at height best whose signed distance
+          // from the line is at least rho sits on or above the tangent position, the highest
+          // the disc can rest on any point of the segment (end points included). Three
+          // products instead of drop_on's roots and division; the margin of 1e-9 mm keeps
+          // the test on the safe side of rounding, so the answer does not change.
+          if (g.nz > 0.0 && (best - g.z0) * g.nz + (s - g.s0) * g.ns >= rho + 1e-9) continue;
           drop(k, rho, rho2);
         }
       }
@@ -343,12 +372,15 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
     const long j0 = std::max(jlo, sup * SB), j1 = std::min(jhi, sup * SB + SB - 1);
     if (j0 > j1) return;
     const double rm2 = reach2(j0, j1);
-    int c0 = 0, c1 = -1;
-    if (!coarse_range(std::sqrt(rm2), c0, c1)) return;
     bool any = false;
-    for (int cb = c0; cb <= c1 && !any; ++cb)
-      any = coarse_can_beat(
-          cb, supermax_[static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(cb)], rm2);
+    const std::size_t srow = static_cast<std::size_t>(sup) * nbc + static_cast<std::size_t>(qb0);
+    for (int o = 0; o < nq && !any; ++o) {
+      const int m = ord[o];
+      const double room = rm2 - at[m].dx2;
+      if (room < 0.0) break;
+      const double need = best - supermax_[srow + static_cast<std::size_t>(m)];
+      any = room >= 0.0 && (need < 0.0 || room > need * need);
+    }
     if (!any) return;
     // Blocks of this super-block, nearest to q first.
     const long b_lo = j0 / B, b_hi = j1 / B;
@@ -373,6 +405,11 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
   LevelEnvelope e;
   e.cell_ = cell_mm > 0.0 ? cell_mm : 1.0;
   const long base = fam.pitch_mm > 0.0 ? std::lround(fam.first_level / fam.pitch_mm) : 0;
+  // Ring edges as end points first (the cells they cross), stored as start and direction.
+  struct Raw {
+    double x0, y0, x1, y1, z;
+  };
+  std::vector<Raw> raw;
   Box2 box;
   for (std::size_t j = 0; j < fam.size(); ++j) {
     const long k = base + static_cast<long>(j);
@@ -381,16 +418,16 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
     for (const Ring& ring : fam.slices[j].rings)
       for (std::size_t q = 0; q < ring.size(); ++q) {
         const Vec2 a = ring[q], b = ring[(q + 1) % ring.size()];
-        e.seg_.push_back({a.x, a.y, b.x, b.y, z});
+        raw.push_back({a.x, a.y, b.x, b.y, z});
         box.add(a);
       }
   }
-  if (e.seg_.empty()) return e;
+  if (raw.empty()) return e;
   e.origin_ = box.min;
   e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
   e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
   const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
-  auto cells = [&](const Seg& g, auto&& fn) {
+  auto cells = [&](const Raw& g, auto&& fn) {
     const int i0 = static_cast<int>(std::floor((std::min(g.x0, g.x1) - e.origin_.x) / e.cell_));
     const int i1 = static_cast<int>(std::floor((std::max(g.x0, g.x1) - e.origin_.x) / e.cell_));
     const int j0 = static_cast<int>(std::floor((std::min(g.y0, g.y1) - e.origin_.y) / e.cell_));
@@ -401,26 +438,28 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
            static_cast<std::size_t>(i));
   };
   e.start_.assign(ncell + 1, 0);
-  for (const Seg& g : e.seg_)
+  for (const Raw& g : raw)
     cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
   for (std::size_t c = 0; c < ncell; ++c)
     e.start_[c + 1] += e.start_[c];
   std::vector<std::uint32_t> items(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
-  for (std::size_t k = 0; k < e.seg_.size(); ++k)
-    cells(e.seg_[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
+  for (std::size_t k = 0; k < raw.size(); ++k)
+    cells(raw[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
   // Highest level first in every cell (ties by index: deterministic).
   for (std::size_t c = 0; c < ncell; ++c)
     std::sort(items.begin() + e.start_[c], items.begin() + e.start_[c + 1],
               [&](std::uint32_t a, std::uint32_t b) {
-                return e.seg_[a].z != e.seg_[b].z ? e.seg_[a].z > e.seg_[b].z : a < b;
+                return raw[a].z != raw[b].z ? raw[a].z > raw[b].z : a < b;
               });
   // The segments themselves in that order, so a query reads a cell from one run of memory.
-  std::vector<Seg> inl(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k)
-    inl[k] = e.seg_[items[k]];
-  e.nseg_ = e.seg_.size();
-  e.seg_ = std::move(inl);
+  // Direction stored as end - start: the same doubles the queries computed per edge before.
+  e.seg_.resize(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Raw& g = raw[items[k]];
+    e.seg_[k] = {g.x0, g.y0, g.x1 - g.x0, g.y1 - g.y0, g.z};
+  }
+  e.nseg_ = raw.size();
   // The highest level of each cell in a small array of its own: most cells a query walks
   // are ruled out by it without touching their segments.
   e.cellmax_.assign(ncell, -kInf);
@@ -448,7 +487,7 @@ std::size_t LevelEnvelope::memory_bytes() const {
 }
 
 double LevelEnvelope::drop_on(const Seg& g, Vec2 p, double r2) {
-  const double ex = g.x1 - g.x0, ey = g.y1 - g.y0;
+  const double ex = g.ex, ey = g.ey;
   const double len2 = ex * ex + ey * ey;
   double t = len2 > 0.0 ? ((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
@@ -498,8 +537,15 @@ double LevelEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
             const Seg& g = seg_[k];
             const double need = best - g.z;
             if (need >= 0.0 && need * need >= room) break;  // sorted: no lower level can win
+            // The distance to the edge's line bounds the distance to the edge from below:
+            // an edge whose line stays beyond the reach it needs cannot win. Products only
+            // (no division); the relative margin keeps rounding on the safe side, so the
+            // answer does not change.
+            const double ex = g.ex, ey = g.ey, len2 = ex * ex + ey * ey;
+            const double cross = (p.x - g.x0) * ey - (p.y - g.y0) * ex;
+            const double reach2 = need > 0.0 ? r2 - need * need : r2;
+            if (cross * cross > reach2 * len2 * (1.0 + 1e-9)) continue;
             // drop_on, with the square root only for an edge that can still win.
-            const double ex = g.x1 - g.x0, ey = g.y1 - g.y0, len2 = ex * ex + ey * ey;
             const double t =
                 len2 > 0.0 ? std::clamp(((p.x - g.x0) * ex + (p.y - g.y0) * ey) / len2, 0.0, 1.0)
                            : 0.0;

@@ -51,31 +51,45 @@ void emit_line(Toolpath& tp, const std::vector<Vec3>& pts, double feed, double p
 // lowered to it (a roughing layer above the stock cuts air at the stock top) and a line that
 // lies entirely at the clip height is dropped.
 Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParams& p, double clip_z,
-                           Toolpath tp, const std::function<double(Vec2)>& cl_at) {
-  bool reverse = false;
-  bool linked = false;  // the tool is down at the end of the previous line
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    std::vector<Vec3>& line = lines[i];
+                           Toolpath tp, const std::function<double(Vec2)>& cl_at, int threads) {
+  // Clipping and simplifying are per line, so they run in parallel (each line writes only its
+  // own slot); which lines are reversed depends on the lines before, so that is decided in
+  // between, serially, and the moves are emitted serially at the end. Same moves as one pass.
+  const std::size_t n = lines.size();
+  std::vector<char> keep(n, 0);
+  parallel_for(n, threads, [&](std::size_t i) {
     bool any = false;
-    for (Vec3& q : line) {
+    for (Vec3& q : lines[i]) {
       if (q.z < clip_z - 1e-9) any = true;
       q.z = std::min(q.z, clip_z);
     }
-    if (!any || line.empty()) {
+    keep[i] = any && !lines[i].empty();
+  });
+  std::vector<char> reversed(n, 0);
+  for (std::size_t i = 0, kept = 0; i < n; ++i)
+    if (keep[i]) reversed[i] = p.zigzag && (kept++ % 2 == 1);
+  parallel_for(n, threads, [&](std::size_t i) {
+    if (!keep[i]) return;
+    std::vector<Vec3>& line = lines[i];
+    if (reversed[i]) std::reverse(line.begin(), line.end());
+    if (p.tolerance_mm > 0.0) line = simplify_polyline(line, p.tolerance_mm);
+  });
+  bool linked = false;  // the tool is down at the end of the previous line
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep[i]) {
       if (linked) tp.retract();
       linked = false;
       continue;
     }
-    if (p.zigzag && reverse) std::reverse(line.begin(), line.end());
-    std::vector<Vec3> pts = p.tolerance_mm > 0.0 ? simplify_polyline(line, p.tolerance_mm) : line;
+    const std::vector<Vec3>& pts = lines[i];
     if (p.zigzag && linked) {
       // Stay down: follow the CL along the region edge from the last point to the next line,
       // so the link never gouges and never lifts more than the surface asks for.
       const Vec3 a = tp.position(), b = pts.front();
       const double len = distance(a.xy(), b.xy());
-      const int n = std::max(1, static_cast<int>(std::ceil(len / p.sampling_mm)));
-      for (int k = 1; k < n; ++k) {
-        const Vec2 xy = a.xy() + (b.xy() - a.xy()) * (static_cast<double>(k) / n);
+      const int steps = std::max(1, static_cast<int>(std::ceil(len / p.sampling_mm)));
+      for (int k = 1; k < steps; ++k) {
+        const Vec2 xy = a.xy() + (b.xy() - a.xy()) * (static_cast<double>(k) / steps);
         tp.feed_to({xy.x, xy.y, std::min(cl_at(xy), clip_z)}, p.feed_mm_min);
       }
       tp.feed_to(b, p.feed_mm_min);
@@ -87,7 +101,6 @@ Toolpath lines_to_toolpath(std::vector<std::vector<Vec3>> lines, const ScanParam
     }
     linked = p.zigzag;
     if (!p.zigzag) tp.retract();
-    reverse = !reverse;
   }
   if (linked) tp.retract();
   return tp;
@@ -198,6 +211,19 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
     auto eval = [&](std::size_t k, const ScanHint& from) {
       const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
       Sample out{{}, from};
+      if (clip_z < kInf) {
+        // Roughing layers above the stock: the hinted edges give a lower bound of the centre
+        // height; when it already lifts the tip to the clip height, the point is the clip
+        // height whatever the full search would add, so the search is skipped (exact).
+        const Axis secondary = along_x ? Axis::kX : Axis::kY;
+        const double lb = std::max({top.family(primary).hint_height(xy, R, from.primary),
+                                    top.family(secondary).hint_height(xy, R, from.secondary),
+                                    top.levels().hint_height(xy, R, from.level)});
+        if (lb - tool_radius_mm >= clip_z) {
+          out.p = {xy.x, xy.y, clip_z};
+          return out;
+        }
+      }
       const double c = top.centre_height(xy, R, primary, &out.hint);
       const double z = c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z;
       out.p = {xy.x, xy.y, std::min(z, clip_z)};
@@ -303,12 +329,13 @@ Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& t
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   auto lines = scan_cl_lines(top, model.bounds, tool.radius(), p.stock_to_leave_mm, p, ctx);
   if (!lines.ok()) return lines.status();
-  return scan_finishing_from_lines(model, top, tool, p, std::move(lines).value());
+  return scan_finishing_from_lines(model, top, tool, p, std::move(lines).value(), ctx);
 }
 
 Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
                                            const Tool& tool, const ScanParams& p,
-                                           std::vector<std::vector<Vec3>> lines) {
+                                           std::vector<std::vector<Vec3>> lines,
+                                           const Context& ctx) {
   SWARF_RETURN_IF_ERROR(need_ball(tool));
   SWARF_RETURN_IF_ERROR(validate(p));
   Toolpath tp =
@@ -320,7 +347,7 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
     const double c = top.centre_height(xy, R, primary);
     return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
   };
-  tp = lines_to_toolpath(std::move(lines), p, kInf, std::move(tp), cl_at);
+  tp = lines_to_toolpath(std::move(lines), p, kInf, std::move(tp), cl_at, ctx.threads);
   if (tp.empty()) return Status{Error::kEmptyResult, "scan finishing: no CL points"};
   return tp;
 }
@@ -356,7 +383,8 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
       const double c = use.centre_height(xy, R, primary);
       return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
     };
-    tp = lines_to_toolpath(std::move(lines).value(), p, stock_top, std::move(tp), cl_at);
+    tp = lines_to_toolpath(std::move(lines).value(), p, stock_top, std::move(tp), cl_at,
+                           ctx.threads);
   }
   if (tp.empty())
     return Status{Error::kEmptyResult, "scan roughing: every layer lies above the stock top " +

@@ -62,17 +62,17 @@ class SliceEnvelope {
   std::vector<Seg> seg_;                 ///< CSR items over (slice, bin), in place
   std::vector<std::uint32_t> slice_of_;  ///< slice index of each item
   std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
-  std::vector<double> binmax_;           ///< per (slice, bin)
   /// Per (slice, bin): a line z <= a + b (s - bin centre) above every upward edge in the bin,
   /// and k = b / sqrt(1 + b^2) (where a disc's top over that line peaks). Much tighter than
   /// binmax_ on a slope, so slices near the contact are ruled out before their segments.
+  /// top: the highest z in the bin (its box); kept beside the line so that a cell's two
+  /// tests read one cache line.
   struct Line {
-    double a, b, k;
+    double a, b, k, top;
   };
   std::vector<Line> line_;
   std::vector<Line> blockline_;   ///< per (block of kBlock slices, bin), above all its lines
   int nbc_ = 0;                   ///< coarse bins
-  std::vector<double> blockmax_;  ///< per (block of kBlock slices, coarse bin)
   std::vector<double> supermax_;  ///< per (super-block of kBlock^2 slices, coarse bin)
   static constexpr std::size_t kBlock = 16;
   static constexpr std::size_t kCoarse = 1;  ///< fine bins per coarse bin
@@ -97,7 +97,7 @@ class LevelEnvelope {
 
  private:
   struct Seg {
-    double x0, y0, x1, y1, z;
+    double x0, y0, ex, ey, z;  ///< start, end - start (as the queries use it), level
   };
   static double drop_on(const Seg& g, Vec2 p, double r2);
   std::size_t nseg_ = 0;

@@ -114,9 +114,11 @@ Result<Toolpath> scan_finishing(const TriSliceModel& model, const TriSliceTop& t
 
 /// The finishing toolpath from CL lines already computed by scan_cl_lines (at the params'
 /// stock to leave), so a caller that also wants the raw CL points computes them once.
+/// `ctx.threads`: lines are simplified in parallel; the toolpath does not depend on it.
 Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const TriSliceTop& top,
                                            const Tool& tool, const ScanParams& params,
-                                           std::vector<std::vector<Vec3>> lines);
+                                           std::vector<std::vector<Vec3>> lines,
+                                           const Context& ctx = default_context());
 
 /// Roughing scan per Table 1 (its stepover replaces params.stepover_mm).
 Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
