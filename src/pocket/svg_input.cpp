@@ -190,6 +190,32 @@ void append_svg_arc(std::vector<Vec2>& out, Vec2 p1, double rx, double ry, doubl
   out.push_back(p2);  // exact end point
 }
 
+// Bezier segments flattened by de Casteljau halving until the control points lie within
+// tol of the chord (the curve lies in their hull, so it is then within tol of the chord).
+double off_chord(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  if (len < 1e-12) return distance(p, a);
+  return std::abs(cross(d, p - a)) / len;
+}
+
+void append_cubic(std::vector<Vec2>& out, Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tol,
+                  int depth = 0) {
+  if (depth >= 18 || std::max(off_chord(p1, p0, p3), off_chord(p2, p0, p3)) <= tol) {
+    out.push_back(p3);
+    return;
+  }
+  const Vec2 a = (p0 + p1) * 0.5, b = (p1 + p2) * 0.5, c = (p2 + p3) * 0.5;
+  const Vec2 ab = (a + b) * 0.5, bc = (b + c) * 0.5, m = (ab + bc) * 0.5;
+  append_cubic(out, p0, a, ab, m, tol, depth + 1);
+  append_cubic(out, m, bc, c, p3, tol, depth + 1);
+}
+
+void append_quadratic(std::vector<Vec2>& out, Vec2 p0, Vec2 p1, Vec2 p2, double tol) {
+  // Degree elevation: the same curve as a cubic.
+  append_cubic(out, p0, p0 + (p1 - p0) * (2.0 / 3.0), p2 + (p1 - p2) * (2.0 / 3.0), p2, tol);
+}
+
 struct PathResult {
   std::vector<Ring> loops;
   std::string error;
@@ -200,7 +226,8 @@ PathResult parse_path(const std::string& d, double tol) {
   Scanner sc(d);
   std::vector<Vec2> cur;
   Vec2 pos{0, 0}, start{0, 0};
-  char cmd = '\0';
+  Vec2 last_control{0, 0};  // second control point of the last C/S, control of the last Q/T
+  char cmd = '\0', prev = '\0';
   auto close_loop = [&](bool explicit_close) {
     if (cur.size() >= 2) {
       if (!explicit_close && distance(cur.front(), cur.back()) > 1e-6) {
@@ -222,6 +249,7 @@ PathResult parse_path(const std::string& d, double tol) {
       if (cmd == 'Z' || cmd == 'z') {
         close_loop(true);
         pos = start;
+        prev = 'Z';
         continue;
       }
     } else if (cmd == '\0' || cmd == 'Z' || cmd == 'z') {
@@ -282,10 +310,68 @@ PathResult parse_path(const std::string& d, double tol) {
         pos = to;
         break;
       }
+      case 'C': {
+        double x1, y1, x2, y2, x, y;
+        if (!sc.number(x1) || !sc.number(y1) || !sc.number(x2) || !sc.number(y2) || !sc.number(x) ||
+            !sc.number(y)) {
+          res.error = "C needs x1 y1 x2 y2 x y";
+          break;
+        }
+        if (cur.empty()) cur.push_back(pos);
+        const Vec2 c1 = base + Vec2{x1, y1}, c2 = base + Vec2{x2, y2}, to = base + Vec2{x, y};
+        append_cubic(cur, pos, c1, c2, to, tol);
+        last_control = c2;
+        pos = to;
+        break;
+      }
+      case 'S': {
+        double x2, y2, x, y;
+        if (!sc.number(x2) || !sc.number(y2) || !sc.number(x) || !sc.number(y)) {
+          res.error = "S needs x2 y2 x y";
+          break;
+        }
+        if (cur.empty()) cur.push_back(pos);
+        // The first control point reflects the previous curve's second one (or is the
+        // current point when the previous command was not C or S).
+        const bool after = prev == 'C' || prev == 'S';
+        const Vec2 c1 = after ? pos * 2.0 - last_control : pos;
+        const Vec2 c2 = base + Vec2{x2, y2}, to = base + Vec2{x, y};
+        append_cubic(cur, pos, c1, c2, to, tol);
+        last_control = c2;
+        pos = to;
+        break;
+      }
+      case 'Q': {
+        double x1, y1, x, y;
+        if (!sc.number(x1) || !sc.number(y1) || !sc.number(x) || !sc.number(y)) {
+          res.error = "Q needs x1 y1 x y";
+          break;
+        }
+        if (cur.empty()) cur.push_back(pos);
+        const Vec2 c = base + Vec2{x1, y1}, to = base + Vec2{x, y};
+        append_quadratic(cur, pos, c, to, tol);
+        last_control = c;
+        pos = to;
+        break;
+      }
+      case 'T': {
+        if (!sc.number(a) || !sc.number(b)) {
+          res.error = "T needs x y";
+          break;
+        }
+        if (cur.empty()) cur.push_back(pos);
+        const bool after = prev == 'Q' || prev == 'T';
+        const Vec2 c = after ? pos * 2.0 - last_control : pos;
+        const Vec2 to = base + Vec2{a, b};
+        append_quadratic(cur, pos, c, to, tol);
+        last_control = c;
+        pos = to;
+        break;
+      }
       default:
-        res.error = std::string("path command '") + cmd +
-                    "' is not supported (use lines and arcs: M L H V A Z)";
+        res.error = std::string("path command '") + cmd + "' is not supported";
     }
+    prev = static_cast<char>(std::toupper(static_cast<unsigned char>(cmd)));
     if (cur.size() > 200000) res.error = "path too long";
   }
   if (res.error.empty() && !cur.empty()) close_loop(false);
@@ -311,6 +397,93 @@ double num_attr(const std::string& tag, const char* name, bool& ok) {
   return d;
 }
 
+// A length with an absolute unit (mm, cm, in, pt, pc, px at 96 per inch) in mm; false for
+// none, %, em or anything else (then the file's user units are taken as mm).
+bool length_mm(const std::string& text, double& mm) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || !std::isfinite(v) || !(v > 0)) return false;
+  std::string unit(end);
+  while (!unit.empty() && std::isspace(static_cast<unsigned char>(unit.back())))
+    unit.pop_back();
+  const double per = unit == "mm"   ? 1.0
+                     : unit == "cm" ? 10.0
+                     : unit == "in" ? 25.4
+                     : unit == "pt" ? 25.4 / 72.0
+                     : unit == "pc" ? 25.4 / 6.0
+                     : unit == "px" ? 25.4 / 96.0
+                                    : 0.0;
+  if (per == 0.0) return false;
+  mm = v * per;
+  return true;
+}
+
+// An SVG transform, x' = a x + c y + e, y' = b x + d y + f (the matrix(a b c d e f) order).
+struct Affine {
+  double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+  Vec2 apply(Vec2 p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
+  Affine then(const Affine& inner) const {  // this * inner: inner applies first
+    return {a * inner.a + c * inner.b,     b * inner.a + d * inner.b,
+            a * inner.c + c * inner.d,     b * inner.c + d * inner.d,
+            a * inner.e + c * inner.f + e, b * inner.e + d * inner.f + f};
+  }
+};
+
+// A transform attribute: a list of matrix, translate, scale, rotate, skewX, skewY, applied
+// right to left (the first one listed is the outermost). Empty string on success.
+std::string parse_transform(const std::string& text, Affine& out) {
+  out = Affine{};
+  std::size_t i = 0;
+  while (true) {
+    while (i < text.size() && (std::isspace(static_cast<unsigned char>(text[i])) || text[i] == ','))
+      ++i;
+    if (i >= text.size()) return {};
+    std::size_t k = i;
+    while (k < text.size() && std::isalpha(static_cast<unsigned char>(text[k])))
+      ++k;
+    const std::string name = text.substr(i, k - i);
+    while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k])))
+      ++k;
+    if (k >= text.size() || text[k] != '(') return "malformed transform \"" + text + "\"";
+    const std::size_t close = text.find(')', k);
+    if (close == std::string::npos) return "unclosed ( in transform \"" + text + "\"";
+    const std::string args_text = text.substr(k + 1, close - k - 1);
+    Scanner sc(args_text);
+    std::vector<double> v;
+    double x = 0;
+    while (!sc.at_end()) {
+      if (!sc.number(x) || v.size() >= 6) return "malformed numbers in " + name + "(...)";
+      v.push_back(x);
+    }
+    Affine t;
+    const std::size_t n = v.size();
+    if (name == "matrix" && n == 6) {
+      t = {v[0], v[1], v[2], v[3], v[4], v[5]};
+    } else if (name == "translate" && (n == 1 || n == 2)) {
+      t.e = v[0];
+      t.f = n == 2 ? v[1] : 0.0;
+    } else if (name == "scale" && (n == 1 || n == 2)) {
+      t.a = v[0];
+      t.d = n == 2 ? v[1] : v[0];
+    } else if (name == "rotate" && (n == 1 || n == 3)) {
+      const double r = deg_to_rad(v[0]), cs = std::cos(r), sn = std::sin(r);
+      t = {cs, sn, -sn, cs, 0, 0};
+      if (n == 3) {  // about (cx, cy): translate(cx, cy) rotate(a) translate(-cx, -cy)
+        const Affine to{1, 0, 0, 1, v[1], v[2]}, back{1, 0, 0, 1, -v[1], -v[2]};
+        t = to.then(t).then(back);
+      }
+    } else if (name == "skewX" && n == 1) {
+      t.c = std::tan(deg_to_rad(v[0]));
+    } else if (name == "skewY" && n == 1) {
+      t.b = std::tan(deg_to_rad(v[0]));
+    } else {
+      return "unsupported transform " + name + " with " + std::to_string(n) + " numbers";
+    }
+    out = out.then(t);
+    i = close + 1;
+  }
+}
+
 }  // namespace
 
 Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
@@ -319,15 +492,69 @@ Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
   const double tol = std::max(options.arc_tolerance_mm, 1e-6);
   std::vector<Ring> loops;
   bool saw_svg = false;
+  // Transforms of the enclosing groups (<g transform=...>, as drawing programs write
+  // layers), outermost first; each entry is the composition down to that group.
+  std::vector<Affine> groups{Affine{}};
   for (const Element& el : elements(text)) {
     const std::string where = src + ":" + std::to_string(el.line) + ": <" + el.name + ">";
-    if (el.name == "svg") saw_svg = true;
-    const bool shape = el.name == "polygon" || el.name == "polyline" || el.name == "path" ||
-                       el.name == "rect" || el.name == "circle";
-    if (!shape) continue;
     std::string v;
-    if (attribute(el.tag, "transform", v))
-      return bad_input(where + ": transform attributes are not supported; flatten them first");
+    if (el.name == "svg" && !saw_svg) {
+      saw_svg = true;
+      // User units are mm, unless the root says otherwise: a viewBox together with a width
+      // in an absolute unit (as drawing programs write them) scales user units to mm.
+      std::string vb, wv, hv;
+      if (attribute(el.tag, "viewBox", vb) && attribute(el.tag, "width", wv)) {
+        std::vector<double> box;
+        Scanner sc(vb);
+        double x = 0;
+        while (box.size() < 5 && sc.number(x))
+          box.push_back(x);
+        double w_mm = 0.0, h_mm = 0.0;
+        if (box.size() != 4 || !(box[2] > 0) || !(box[3] > 0))
+          return bad_input(where + ": malformed viewBox \"" + vb + "\"");
+        if (length_mm(wv, w_mm)) {
+          const double sx = w_mm / box[2];
+          const double sy =
+              attribute(el.tag, "height", hv) && length_mm(hv, h_mm) ? h_mm / box[3] : sx;
+          groups[0] = Affine{sx, 0, 0, sy, -sx * box[0], -sy * box[1]};
+        }
+      }
+      continue;
+    }
+    const bool self_closing = !el.tag.empty() && el.tag.back() == '/';
+    if (el.name.empty() && el.tag.rfind("/g", 0) == 0 &&
+        (el.tag.size() == 2 || !std::isalnum(static_cast<unsigned char>(el.tag[2])))) {
+      if (groups.size() > 1) groups.pop_back();
+      continue;
+    }
+    if (el.name == "g") {
+      Affine t;
+      if (attribute(el.tag, "transform", v)) {
+        const std::string err = parse_transform(v, t);
+        if (!err.empty()) return bad_input(where + ": " + err);
+      }
+      if (!self_closing) groups.push_back(groups.back().then(t));
+      continue;
+    }
+    const bool shape = el.name == "polygon" || el.name == "polyline" || el.name == "path" ||
+                       el.name == "rect" || el.name == "circle" || el.name == "ellipse";
+    if (!shape) continue;
+    Affine local;
+    if (attribute(el.tag, "transform", v)) {
+      const std::string err = parse_transform(v, local);
+      if (!err.empty()) return bad_input(where + ": " + err);
+    }
+    const Affine xf = groups.back().then(local);
+    // Curves are flattened before the transform: to keep tol after it, divide by its
+    // largest stretch (the larger singular value of the linear part).
+    const double p2 = xf.a * xf.a + xf.b * xf.b + xf.c * xf.c + xf.d * xf.d;
+    const double det = xf.a * xf.d - xf.b * xf.c;
+    const double stretch =
+        std::sqrt(0.5 * (p2 + std::sqrt(std::max(0.0, p2 * p2 - 4 * det * det))));
+    if (!(stretch > 1e-9) || !std::isfinite(stretch))
+      return bad_input(where + ": the transform collapses the shape");
+    const double etol = tol / std::max(1.0, stretch);
+    const std::size_t first_new = loops.size();
     if (el.name == "polygon" || el.name == "polyline") {
       std::vector<Vec2> pts;
       if (!attribute(el.tag, "points", v) || !points_attr(v, pts))
@@ -337,7 +564,7 @@ Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
       loops.push_back(std::move(pts));
     } else if (el.name == "path") {
       if (!attribute(el.tag, "d", v)) return bad_input(where + ": missing d attribute");
-      PathResult pr = parse_path(v, tol);
+      PathResult pr = parse_path(v, etol);
       if (!pr.error.empty()) return bad_input(where + ": " + pr.error);
       for (Ring& r : pr.loops)
         loops.push_back(std::move(r));
@@ -347,15 +574,31 @@ Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
       const double w = num_attr(el.tag, "width", ok), h = num_attr(el.tag, "height", ok);
       if (!ok || w <= 0 || h <= 0) return bad_input(where + ": malformed x, y, width or height");
       loops.push_back({{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}});
-    } else {
+    } else if (el.name == "circle") {
       bool ok = true;
       const double cx = num_attr(el.tag, "cx", ok), cy = num_attr(el.tag, "cy", ok);
       const double r = num_attr(el.tag, "r", ok);
       if (!ok || r <= 0) return bad_input(where + ": malformed cx, cy or r");
       Ring ring;
-      append_arc(ring, {cx, cy}, r, 0.0, 2 * kPi, tol);
+      append_arc(ring, {cx, cy}, r, 0.0, 2 * kPi, etol);
+      loops.push_back(std::move(ring));
+    } else {
+      bool ok = true;
+      const double cx = num_attr(el.tag, "cx", ok), cy = num_attr(el.tag, "cy", ok);
+      const double rx = num_attr(el.tag, "rx", ok), ry = num_attr(el.tag, "ry", ok);
+      if (!ok || rx <= 0 || ry <= 0) return bad_input(where + ": malformed cx, cy, rx or ry");
+      // A circle of the larger radius, flattened to the tolerance, squeezed along one axis.
+      const double r = std::max(rx, ry);
+      Ring unit;
+      append_arc(unit, {0, 0}, r, 0.0, 2 * kPi, etol);
+      Ring ring;
+      for (const Vec2& q : unit)
+        ring.push_back({cx + q.x * rx / r, cy + q.y * ry / r});
       loops.push_back(std::move(ring));
     }
+    for (std::size_t k = first_new; k < loops.size(); ++k)
+      for (Vec2& q : loops[k])
+        q = xf.apply(q);
     if (loops.size() > 10000) return bad_input(src + ": more than 10000 outlines");
   }
   if (!saw_svg) return bad_input(src + ": no <svg> element");

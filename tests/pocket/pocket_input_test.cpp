@@ -70,7 +70,89 @@ TEST(PocketInput, SvgHVAndRelativeLinesAndOpenPolylines) {
   EXPECT_NE(open.status().message().find("o.svg:1"), std::string::npos);
   EXPECT_NE(open.status().message().find("open"), std::string::npos);
   EXPECT_FALSE(parse_pocket_svg(R"(<svg><path d="M0 0 L10 0 L10 10"/></svg>)", "p.svg").ok());
-  EXPECT_FALSE(parse_pocket_svg(R"(<svg><path d="M0 0 C1 1 2 2 3 3 Z"/></svg>)", "q.svg").ok());
+  auto unknown = parse_pocket_svg(R"(<svg><path d="M0 0 L10 0 B10 10 Z"/></svg>)", "q.svg");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.status().message().find("path command 'B'"), std::string::npos);
+}
+
+// Cubic and quadratic Bezier segments, flattened to the tolerance; S and T reflect the last
+// control point. Truths: a circle of four cubic quarters (radius within 0.03 % of 10 mm), the
+// same written with S, and the area of a quadratic segment over its chord (2/3 of its control
+// triangle).
+TEST(PocketInput, SvgBezierCurvesFlattenToTheirArea) {
+  const CurveInputOptions fine{.arc_tolerance_mm = 0.0005};
+  auto c = parse_pocket_svg(R"(<svg><path d="M10,0 C10,5.5228 5.5228,10 0,10
+      C-5.5228,10 -10,5.5228 -10,0 C-10,-5.5228 -5.5228,-10 0,-10 C5.5228,-10 10,-5.5228 10,0Z"/>
+      </svg>)",
+                            "c.svg", fine);
+  ASSERT_TRUE(c.ok()) << c.status().to_string();
+  EXPECT_NEAR(region_area(*c), kPi * 100.0, kPi * 100.0 * 1e-3);
+  for (const Vec2& q : c->outer())
+    EXPECT_NEAR(norm(q), 10.0, 10.0 * 3e-4 + 0.0005);
+  auto s = parse_pocket_svg(R"(<svg><path d="M10,0 C10,5.5228 5.5228,10 0,10
+      S-10,5.5228 -10,0 S-5.5228,-10 0,-10 s10,4.4772 10,10z"/></svg>)",
+                            "s.svg", fine);
+  ASSERT_TRUE(s.ok()) << s.status().to_string();
+  EXPECT_NEAR(region_area(*s), region_area(*c), 1e-6);
+  // Q up to (5, 10) and back down by T, whose reflected control is (15, -10): 100/3 + 100/3.
+  auto q = parse_pocket_svg(R"(<svg><path d="M0,0 Q5,10 10,0 T0,0 Z"/></svg>)", "q.svg", fine);
+  ASSERT_TRUE(q.ok()) << q.status().to_string();
+  EXPECT_NEAR(region_area(*q), 200.0 / 3.0, 0.05);
+}
+
+// transform attributes on shapes and on enclosing groups (as drawing programs write layers),
+// and <ellipse>. A group's transform ends with its </g>: the square after it is untouched
+// (were it scaled and moved with the circle it would lie outside the outer boundary).
+TEST(PocketInput, SvgTransformsOfShapesAndGroupsAndEllipses) {
+  auto p = parse_pocket_svg(R"svg(<svg>
+      <rect x="0" y="0" width="100" height="50"/>
+      <g transform="translate(50,25) scale(2)"><g><circle cx="0" cy="0" r="5"/></g></g>
+      <rect x="10" y="10" width="5" height="5"/>
+      <rect x="0" y="0" width="10" height="4" transform="translate(80,30) rotate(90)"/>
+      <ellipse cx="25" cy="25" rx="6" ry="3" transform="rotate(90, 25, 25)"/></svg>)svg",
+                            "t.svg", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  ASSERT_EQ(p->island_count(), 4u);
+  EXPECT_NEAR(region_area(*p), 5000.0 - kPi * 100.0 - 25.0 - 40.0 - kPi * 18.0, 0.1);
+  // The rotated rectangle: x from 76 to 80, y from 30 to 40 (SVG), so -40 to -30 here.
+  bool found = false;
+  for (std::size_t k = 1; k < p->region.rings.size(); ++k) {
+    Box2 b;
+    for (const Vec2& q : p->region.rings[k])
+      b.add(q);
+    if (std::abs(b.min.x - 76.0) < 1e-9 && std::abs(b.max.x - 80.0) < 1e-9 &&
+        std::abs(b.min.y + 40.0) < 1e-9 && std::abs(b.max.y + 30.0) < 1e-9)
+      found = true;
+  }
+  EXPECT_TRUE(found);
+  auto bad = parse_pocket_svg(
+      R"svg(<svg><rect width="5" height="5" transform="rotate(1,2)"/></svg>)svg", "b.svg");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("b.svg:1"), std::string::npos);
+  EXPECT_NE(bad.status().message().find("transform"), std::string::npos);
+}
+
+// User units are mm unless the root <svg> has a viewBox and a width in an absolute unit.
+TEST(PocketInput, SvgViewBoxAndAbsoluteWidthScaleUserUnitsToMm) {
+  auto a = parse_pocket_svg(
+      R"(<svg width="20mm" height="10mm" viewBox="0 0 80 40"><rect width="80" height="40"/></svg>)",
+      "a.svg");
+  ASSERT_TRUE(a.ok()) << a.status().to_string();
+  EXPECT_NEAR(region_area(*a), 200.0, 1e-9);
+  auto b = parse_pocket_svg(
+      R"(<svg width="1in" viewBox="10 10 96 96"><rect x="10" y="10" width="96" height="96"/></svg>)",
+      "b.svg");
+  ASSERT_TRUE(b.ok()) << b.status().to_string();
+  EXPECT_NEAR(region_area(*b), 25.4 * 25.4, 1e-9);
+  Box2 box;
+  for (const Vec2& q : b->outer())
+    box.add(q);
+  EXPECT_NEAR(box.min.x, 0.0, 1e-12);
+  EXPECT_NEAR(box.max.x, 25.4, 1e-12);
+  auto c = parse_pocket_svg(
+      R"(<svg width="100%" viewBox="0 0 8 4"><rect width="8" height="4"/></svg>)", "c.svg");
+  ASSERT_TRUE(c.ok()) << c.status().to_string();
+  EXPECT_NEAR(region_area(*c), 32.0, 1e-9);
 }
 
 std::string dxf(const std::string& entities) {
