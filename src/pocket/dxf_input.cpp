@@ -1,5 +1,7 @@
-// ASCII DXF pocket reader: LWPOLYLINE (bulges), LINE, ARC, CIRCLE of the ENTITIES section,
-// chained into closed loops.
+// ASCII DXF pocket reader: LWPOLYLINE and POLYLINE/VERTEX (bulges), LINE, ARC, CIRCLE,
+// ELLIPSE and SPLINE (NURBS by control points) of the ENTITIES section, chained into closed
+// loops.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -85,6 +87,67 @@ void append_bulge(std::vector<Vec2>& out, Vec2 p1, Vec2 p2, double bulge, double
   out.insert(out.end(), pts.begin(), pts.end());
 }
 
+// A NURBS curve (DXF SPLINE): de Boor's algorithm on the homogeneous control points.
+struct Nurbs {
+  int degree = 3;
+  std::vector<double> knots;
+  std::vector<Vec2> ctrl;
+  std::vector<double> weights;  // empty: all 1
+  Vec2 at(double t) const {
+    const int p = degree;
+    const int n = static_cast<int>(ctrl.size());
+    int k = p;  // knot span: knots[k] <= t < knots[k + 1], clamped to the last one
+    while (k + 1 < n && knots[static_cast<std::size_t>(k) + 1] <= t)
+      ++k;
+    std::vector<double> wx(static_cast<std::size_t>(p) + 1), wy(wx.size()), ww(wx.size());
+    for (int j = 0; j <= p; ++j) {
+      const std::size_t i = static_cast<std::size_t>(j + k - p);
+      const double w = weights.empty() ? 1.0 : weights[i];
+      wx[static_cast<std::size_t>(j)] = ctrl[i].x * w;
+      wy[static_cast<std::size_t>(j)] = ctrl[i].y * w;
+      ww[static_cast<std::size_t>(j)] = w;
+    }
+    for (int r = 1; r <= p; ++r)
+      for (int j = p; j >= r; --j) {
+        const double lo = knots[static_cast<std::size_t>(j + k - p)];
+        const double hi = knots[static_cast<std::size_t>(j + 1 + k - r)];
+        const double a = hi > lo ? (t - lo) / (hi - lo) : 0.0;
+        const std::size_t u = static_cast<std::size_t>(j), v = u - 1;
+        wx[u] = (1.0 - a) * wx[v] + a * wx[u];
+        wy[u] = (1.0 - a) * wy[v] + a * wy[u];
+        ww[u] = (1.0 - a) * ww[v] + a * ww[u];
+      }
+    const std::size_t e = static_cast<std::size_t>(p);
+    return {wx[e] / ww[e], wy[e] / ww[e]};
+  }
+};
+
+// A bound on one curve's flattened points (a hostile file could otherwise ask for 2^16 per
+// knot span); the result is then rejected.
+constexpr std::size_t kMaxCurvePoints = 1000000;
+
+// Samples f on [t0, t1] (f(t0) already in out) until every piece's midpoint and quarter
+// points lie within tol of its chord; appends up to f(t1).
+template <class F>
+void sample_curve(std::vector<Vec2>& out, const F& f, double t0, Vec2 p0, double t1, Vec2 p1,
+                  double tol, int depth = 0) {
+  const double tm = 0.5 * (t0 + t1);
+  const Vec2 pm = f(tm);
+  auto off = [&](Vec2 q) {
+    const Vec2 d = p1 - p0;
+    const double len = norm(d);
+    return len < 1e-12 ? distance(q, p0) : std::abs(cross(d, q - p0)) / len;
+  };
+  const bool flat =
+      off(pm) <= tol && off(f(0.5 * (t0 + tm))) <= tol && off(f(0.5 * (tm + t1))) <= tol;
+  if (depth >= 16 || flat || out.size() > kMaxCurvePoints) {
+    out.push_back(p1);
+    return;
+  }
+  sample_curve(out, f, t0, p0, tm, pm, tol, depth + 1);
+  sample_curve(out, f, tm, pm, t1, p1, tol, depth + 1);
+}
+
 std::string fmt(Vec2 p) {
   char b[64];
   std::snprintf(b, sizeof b, "(%.6g, %.6g)", p.x, p.y);
@@ -112,6 +175,20 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
   std::vector<Ring> loops;
   std::vector<std::vector<Vec2>> chains;
   std::vector<std::size_t> chain_lines;
+  auto add_polyline = [&](const std::vector<Vec2>& verts, const std::vector<double>& bulges,
+                          bool closed, std::size_t line) {
+    std::vector<Vec2> pts{verts[0]};
+    for (std::size_t k = 0; k + 1 < verts.size(); ++k)
+      append_bulge(pts, verts[k], verts[k + 1], bulges[k], tol);
+    if (closed) {
+      append_bulge(pts, verts.back(), verts[0], bulges.back(), tol);
+      pts.pop_back();
+      loops.push_back(std::move(pts));
+    } else {
+      chains.push_back(std::move(pts));
+      chain_lines.push_back(line);
+    }
+  };
   while (i < pairs.size()) {
     if (pairs[i].code != 0) {
       ++i;
@@ -149,12 +226,127 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
         if (verts.size() > 200000) return bad_input(where + ": too many vertices");
       }
       if (verts.size() < 2) return bad_input(where + ": fewer than 2 vertices");
-      const bool closed = (flags & 1) != 0;
-      std::vector<Vec2> pts{verts[0]};
-      for (std::size_t k = 0; k + 1 < verts.size(); ++k)
-        append_bulge(pts, verts[k], verts[k + 1], bulges[k], tol);
-      if (closed) {
-        append_bulge(pts, verts.back(), verts[0], bulges.back(), tol);
+      add_polyline(verts, bulges, (flags & 1) != 0, line);
+    } else if (type == "POLYLINE") {
+      // The older form (R12): VERTEX entities follow until SEQEND.
+      int flags = 0;
+      for (const Pair& p : body)
+        if (p.code == 70) flags = std::atoi(p.value.c_str());
+      std::vector<Vec2> verts;
+      std::vector<double> bulges;
+      while (i < pairs.size() && pairs[i].code == 0 && pairs[i].value == "VERTEX") {
+        std::size_t k = i + 1;
+        Vec2 v{0, 0};
+        double bulge = 0.0, x = 0.0;
+        int vflags = 0;
+        for (; k < pairs.size() && pairs[k].code != 0; ++k) {
+          const Pair& p = pairs[k];
+          if (p.code == 10 || p.code == 20 || p.code == 42) {
+            if (!num(p, x))
+              return bad_input(where + ": bad VERTEX number at line " + std::to_string(p.line));
+            (p.code == 10 ? v.x : p.code == 20 ? v.y : bulge) = x;
+          } else if (p.code == 70) {
+            vflags = std::atoi(p.value.c_str());
+          }
+        }
+        i = k;
+        if ((vflags & 16) != 0) continue;  // a spline frame control point, not on the curve
+        verts.push_back(v);
+        bulges.push_back(bulge);
+        if (verts.size() > 200000) return bad_input(where + ": too many vertices");
+      }
+      if (i < pairs.size() && pairs[i].code == 0 && pairs[i].value == "SEQEND") ++i;
+      if (verts.size() < 2) return bad_input(where + ": fewer than 2 vertices");
+      add_polyline(verts, bulges, (flags & 1) != 0, line);
+    } else if (type == "ELLIPSE") {
+      double cx = 0, cy = 0, mx = 0, my = 0, ratio = 1, t0 = 0, t1 = 2 * kPi;
+      for (const Pair& p : body) {
+        double v = 0;
+        if (p.code != 10 && p.code != 20 && p.code != 11 && p.code != 21 && p.code != 40 &&
+            p.code != 41 && p.code != 42)
+          continue;
+        if (!num(p, v)) return bad_input(where + ": bad number at line " + std::to_string(p.line));
+        (p.code == 10   ? cx
+         : p.code == 20 ? cy
+         : p.code == 11 ? mx
+         : p.code == 21 ? my
+         : p.code == 40 ? ratio
+         : p.code == 41 ? t0
+                        : t1) = v;
+      }
+      const double a = std::hypot(mx, my);
+      if (!(a > 0.0) || !(ratio > 0.0) || ratio > 1.0 + 1e-9)
+        return bad_input(where + ": needs a major axis and a ratio in (0, 1]");
+      const Vec2 u{mx / a, my / a}, w = perp(u);
+      const double b = a * ratio;
+      auto at = [&](double t) {
+        return Vec2{cx, cy} + u * (a * std::cos(t)) + w * (b * std::sin(t));
+      };
+      double sweep = t1 - t0;
+      while (sweep <= 0.0)
+        sweep += 2 * kPi;
+      const bool full = std::abs(sweep - 2 * kPi) < 1e-9;
+      std::vector<Vec2> pts{at(t0)};
+      // In quarters, so no piece's three test points can all miss its bulge.
+      const int pieces = 4 * static_cast<int>(std::ceil(sweep / (0.5 * kPi)));
+      for (int k = 0; k < pieces; ++k) {
+        const double ta = t0 + sweep * k / pieces, tb = t0 + sweep * (k + 1) / pieces;
+        sample_curve(pts, at, ta, pts.back(), tb, at(tb), tol);
+      }
+      if (full) {
+        pts.pop_back();
+        loops.push_back(std::move(pts));
+      } else {
+        chains.push_back(std::move(pts));
+        chain_lines.push_back(line);
+      }
+    } else if (type == "SPLINE") {
+      Nurbs c;
+      int flags = 0;
+      std::vector<Vec2> fit;
+      for (const Pair& p : body) {
+        double v = 0;
+        if (p.code == 70) flags = std::atoi(p.value.c_str());
+        if (p.code == 71) c.degree = std::atoi(p.value.c_str());
+        if (p.code != 10 && p.code != 20 && p.code != 40 && p.code != 41 && p.code != 11 &&
+            p.code != 21)
+          continue;
+        if (!num(p, v)) return bad_input(where + ": bad number at line " + std::to_string(p.line));
+        if (p.code == 40) c.knots.push_back(v);
+        if (p.code == 41) c.weights.push_back(v);
+        if (p.code == 10) c.ctrl.push_back({v, 0.0});
+        if (p.code == 20 && !c.ctrl.empty()) c.ctrl.back().y = v;
+        if (p.code == 11) fit.push_back({v, 0.0});
+        if (p.code == 21 && !fit.empty()) fit.back().y = v;
+        if (c.ctrl.size() + c.knots.size() + fit.size() > 200000)
+          return bad_input(where + ": too many points");
+      }
+      const std::size_t n = c.ctrl.size();
+      const bool ok = c.degree >= 1 && c.degree <= 11 && n > static_cast<std::size_t>(c.degree) &&
+                      c.knots.size() == n + static_cast<std::size_t>(c.degree) + 1 &&
+                      (c.weights.empty() || c.weights.size() == n) &&
+                      std::is_sorted(c.knots.begin(), c.knots.end());
+      if (!ok) {
+        return bad_input(where +
+                         ": needs degree + 1 <= control points and knots = control points "
+                         "+ degree + 1, non-decreasing (fit-point-only splines are not "
+                         "supported: " +
+                         std::to_string(fit.size()) + " fit points)");
+      }
+      for (double w : c.weights)
+        if (!(w > 0.0)) return bad_input(where + ": weights must be positive");
+      const double ta = c.knots[static_cast<std::size_t>(c.degree)];
+      auto at = [&](double t) { return c.at(t); };
+      std::vector<Vec2> pts{at(ta)};
+      for (std::size_t k = static_cast<std::size_t>(c.degree); k < n; ++k) {  // per knot span
+        const double u0 = c.knots[k], u1 = c.knots[k + 1];
+        if (!(u1 > u0)) continue;
+        // The last span's end, evaluated just inside it (de Boor's span search is half-open).
+        const double e = k + 1 == n ? u1 - 1e-12 * std::max(1.0, std::abs(u1)) : u1;
+        sample_curve(pts, at, u0, pts.back(), e, at(e), tol);
+      }
+      if (pts.size() > kMaxCurvePoints) return bad_input(where + ": too many points");
+      if ((flags & 1) != 0 || distance(pts.front(), pts.back()) <= join) {
         pts.pop_back();
         loops.push_back(std::move(pts));
       } else {

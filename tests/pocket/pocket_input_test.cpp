@@ -186,6 +186,52 @@ TEST(PocketInput, DxfLwpolylineBulgeAndCircleIsland) {
   EXPECT_NEAR(region_area(*p), 400.0 + kPi * 50.0 - kPi * 4.0, 0.02);
 }
 
+// The R12 forms and curves: POLYLINE/VERTEX/SEQEND with a bulge (a spline frame control
+// point, VERTEX flag 16, is not on the curve and is skipped), a full ELLIPSE island and a
+// rational quadratic SPLINE island that is an exact circle (nine control points, weights 1
+// and sqrt(2)/2): every flattened point on radius 3 to rounding.
+TEST(PocketInput, DxfPolylineEllipseAndNurbsSpline) {
+  auto vertex = [](double x, double y, double bulge, int flags) {
+    return "0\nVERTEX\n10\n" + std::to_string(x) + "\n20\n" + std::to_string(y) + "\n42\n" +
+           std::to_string(bulge) + "\n70\n" + std::to_string(flags) + "\n";
+  };
+  std::string e = "0\nPOLYLINE\n66\n1\n70\n1\n" + vertex(0, 0, 0, 0) + vertex(60, 0, 1, 0) +
+                  vertex(100, 100, 0, 16) + vertex(60, 30, 0, 0) + vertex(0, 30, 0, 0) +
+                  "0\nSEQEND\n";
+  e += "0\nELLIPSE\n10\n15\n20\n15\n11\n8\n21\n0\n40\n0.5\n41\n0\n42\n6.283185307179586\n";
+  const double w = std::sqrt(0.5);
+  const double cx = 40, cy = 15, r = 3;
+  const double pts[9][2] = {{1, 0},   {1, 1},  {0, 1},  {-1, 1}, {-1, 0},
+                            {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+  e += "0\nSPLINE\n70\n11\n71\n2\n72\n12\n73\n9\n";
+  for (double k : {0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0})
+    e += "40\n" + std::to_string(k) + "\n";
+  for (int k = 0; k < 9; ++k) {
+    e += "41\n" + std::to_string(k % 2 == 0 ? 1.0 : w) + "\n";
+    e += "10\n" + std::to_string(cx + r * pts[k][0]) + "\n20\n" +
+         std::to_string(cy + r * pts[k][1]) + "\n";
+  }
+  auto p = parse_pocket_dxf(dxf(e), "r12.dxf", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  ASSERT_EQ(p->island_count(), 2u);
+  // 60 x 30 with a half disc of radius 15 on the right; minus the ellipse 8 x 4 and the circle.
+  EXPECT_NEAR(region_area(*p), 1800.0 + kPi * 112.5 - kPi * 32.0 - kPi * 9.0, 0.05);
+  bool circle = false;
+  for (std::size_t k = 1; k < p->region.rings.size(); ++k) {
+    const Ring& ring = p->region.rings[k];
+    if (distance(ring.front(), {cx, cy}) > 3.5) continue;
+    circle = true;
+    for (const Vec2& q : ring)
+      EXPECT_NEAR(distance(q, {cx, cy}), r, 1e-5);  // std::to_string keeps 6 decimals
+  }
+  EXPECT_TRUE(circle);
+  auto fit_only = parse_pocket_dxf(
+      dxf("0\nSPLINE\n70\n8\n71\n3\n74\n3\n11\n0\n21\n0\n11\n5\n21\n5\n11\n10\n21\n0\n"), "f.dxf");
+  ASSERT_FALSE(fit_only.ok());
+  EXPECT_NE(fit_only.status().message().find("f.dxf"), std::string::npos);
+  EXPECT_NE(fit_only.status().message().find("fit points"), std::string::npos);
+}
+
 TEST(PocketInput, DxfOpenChainIsRejectedWithItsEnds) {
   const std::string e =
       "0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nLINE\n10\n10\n20\n0\n11\n10\n21\n10\n";
