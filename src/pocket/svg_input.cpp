@@ -310,61 +310,42 @@ PathResult parse_path(const std::string& d, double tol) {
         pos = to;
         break;
       }
-      case 'C': {
-        double x1, y1, x2, y2, x, y;
-        if (!sc.number(x1) || !sc.number(y1) || !sc.number(x2) || !sc.number(y2) || !sc.number(x) ||
-            !sc.number(y)) {
-          res.error = "C needs x1 y1 x2 y2 x y";
-          break;
-        }
-        if (cur.empty()) cur.push_back(pos);
-        const Vec2 c1 = base + Vec2{x1, y1}, c2 = base + Vec2{x2, y2}, to = base + Vec2{x, y};
-        append_cubic(cur, pos, c1, c2, to, tol);
-        last_control = c2;
-        pos = to;
-        break;
-      }
-      case 'S': {
-        double x2, y2, x, y;
-        if (!sc.number(x2) || !sc.number(y2) || !sc.number(x) || !sc.number(y)) {
-          res.error = "S needs x2 y2 x y";
-          break;
-        }
-        if (cur.empty()) cur.push_back(pos);
-        // The first control point reflects the previous curve's second one (or is the
-        // current point when the previous command was not C or S).
-        const bool after = prev == 'C' || prev == 'S';
-        const Vec2 c1 = after ? pos * 2.0 - last_control : pos;
-        const Vec2 c2 = base + Vec2{x2, y2}, to = base + Vec2{x, y};
-        append_cubic(cur, pos, c1, c2, to, tol);
-        last_control = c2;
-        pos = to;
-        break;
-      }
-      case 'Q': {
-        double x1, y1, x, y;
-        if (!sc.number(x1) || !sc.number(y1) || !sc.number(x) || !sc.number(y)) {
-          res.error = "Q needs x1 y1 x y";
-          break;
-        }
-        if (cur.empty()) cur.push_back(pos);
-        const Vec2 c = base + Vec2{x1, y1}, to = base + Vec2{x, y};
-        append_quadratic(cur, pos, c, to, tol);
-        last_control = c;
-        pos = to;
-        break;
-      }
+      case 'C':
+      case 'S':
+      case 'Q':
       case 'T': {
-        if (!sc.number(a) || !sc.number(b)) {
-          res.error = "T needs x y";
+        // Bezier segments. S and T take their first control point as the reflection of the
+        // previous segment's last one (the current point when the previous command was not
+        // of their kind).
+        const char up = static_cast<char>(std::toupper(static_cast<unsigned char>(cmd)));
+        const bool cubic = up == 'C' || up == 'S', smooth = up == 'S' || up == 'T';
+        double v[6] = {0, 0, 0, 0, 0, 0};
+        const int count = (cubic ? 4 : 2) + (smooth ? 0 : 2);
+        bool ok = true;
+        for (int k = 0; k < count && ok; ++k)
+          ok = sc.number(v[k]);
+        if (!ok) {
+          res.error = std::string(1, up) + " needs " +
+                      (up == 'C'   ? "x1 y1 x2 y2 x y"
+                       : up == 'S' ? "x2 y2 x y"
+                       : up == 'Q' ? "x1 y1 x y"
+                                   : "x y");
           break;
         }
         if (cur.empty()) cur.push_back(pos);
-        const bool after = prev == 'Q' || prev == 'T';
-        const Vec2 c = after ? pos * 2.0 - last_control : pos;
-        const Vec2 to = base + Vec2{a, b};
-        append_quadratic(cur, pos, c, to, tol);
-        last_control = c;
+        const bool after = cubic ? (prev == 'C' || prev == 'S') : (prev == 'Q' || prev == 'T');
+        const Vec2 first =
+            smooth ? (after ? pos * 2.0 - last_control : pos) : base + Vec2{v[0], v[1]};
+        const int o = smooth ? 0 : 2;  // where the numbers after the first control point start
+        const Vec2 to = base + Vec2{v[count - 2], v[count - 1]};
+        if (cubic) {
+          const Vec2 second = base + Vec2{v[o], v[o + 1]};
+          append_cubic(cur, pos, first, second, to, tol);
+          last_control = second;
+        } else {
+          append_quadratic(cur, pos, first, to, tol);
+          last_control = first;
+        }
         pos = to;
         break;
       }

@@ -35,6 +35,16 @@ std::vector<Vec3> read_cl(const std::string& csv) {
   return out;
 }
 
+// CL points of `swarf dropcut` (the exact reference) on the tests' grid: ø6 ball, lines 1 mm
+// apart, points 0.25 mm apart.
+std::vector<Vec3> dropcut_grid(const TempDir& dir, const std::string& stl) {
+  const auto b =
+      run_swarf("dropcut " + dir.file(stl) + " --tool ball:6 --stepover 1 --sampling 0.25 --csv " +
+                dir.file("d.csv"));
+  EXPECT_EQ(b.status, 0) << b.out;
+  return read_cl(slurp(dir.file("d.csv")));
+}
+
 // An open surface (a dome without its base, as a relief or a broken export comes) has no
 // inside for the tri-slice model: scanning falls back to the exact drop-cutter (the same CL
 // points as `swarf dropcut`, stock to leave as a larger ball), contour paths are refused.
@@ -54,12 +64,8 @@ TEST(TriSliceCli, OpenMeshScansWithTheExactDropCutterAndRefusesContours) {
   const auto a = run_swarf(scan + "--zigzag -o " + dir.file("s.nc") + " --csv " +
                            dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
-  const auto b =
-      run_swarf("dropcut " + dir.file("dome.stl") +
-                " --tool ball:6 --stepover 1 --sampling 0.25 --csv " + dir.file("d.csv"));
-  ASSERT_EQ(b.status, 0) << b.out;
   const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
-  const std::vector<Vec3> d = read_cl(slurp(dir.file("d.csv")));
+  const std::vector<Vec3> d = dropcut_grid(dir, "dome.stl");
   ASSERT_EQ(s.size(), d.size());
   ASSERT_GT(s.size(), 1000u);
   for (std::size_t k = 0; k < s.size(); ++k)
@@ -92,12 +98,8 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
                 "0.1 -o " +
                 dir.file("s.nc") + " --csv " + dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
-  const auto b =
-      run_swarf("dropcut " + dir.file("dome.stl") +
-                " --tool ball:6 --stepover 1 --sampling 0.25 --csv " + dir.file("d.csv"));
-  ASSERT_EQ(b.status, 0) << b.out;
   const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
-  const std::vector<Vec3> d = read_cl(slurp(dir.file("d.csv")));
+  const std::vector<Vec3> d = dropcut_grid(dir, "dome.stl");
   ASSERT_EQ(s.size(), d.size());
   ASSERT_GT(s.size(), 1000u);
   std::size_t close = 0;
