@@ -282,9 +282,10 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
       auto at = [&](double t) {
         return Vec2{cx, cy} + u * (a * std::cos(t)) + w * (b * std::sin(t));
       };
-      double sweep = t1 - t0;
-      while (sweep <= 0.0)
-        sweep += 2 * kPi;
+      // Parameters modulo a turn (a loop adding turns would never end for 1e72).
+      double sweep = std::fmod(t1 - t0, 2 * kPi);
+      if (sweep <= 0.0) sweep += 2 * kPi;
+      t0 = std::fmod(t0, 2 * kPi);
       const bool full = std::abs(sweep - 2 * kPi) < 1e-9;
       std::vector<Vec2> pts{at(t0)};
       // In quarters, so no piece's three test points can all miss its bulge.
@@ -398,10 +399,9 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
         continue;
       }
       // ARC: counter-clockwise from start angle to end angle, degrees.
-      double sweep = a1 - a0;
-      while (sweep <= 0.0)
-        sweep += 360.0;
-      if (sweep > 360.0) sweep = std::fmod(sweep, 360.0);
+      double sweep = std::fmod(a1 - a0, 360.0);
+      if (sweep <= 0.0) sweep += 360.0;
+      a0 = std::fmod(a0, 360.0);
       const double s = deg_to_rad(a0);
       std::vector<Vec2> pts{{x + r * std::cos(s), y + r * std::sin(s)}};
       append_arc(pts, {x, y}, r, s, s + deg_to_rad(sweep), tol);

@@ -232,6 +232,21 @@ TEST(PocketInput, DxfPolylineEllipseAndNurbsSpline) {
   EXPECT_NE(fit_only.status().message().find("fit points"), std::string::npos);
 }
 
+// Angles and parameters far beyond a turn (found by the fuzzer: a loop adding turns to
+// 1e72 never ended) are taken modulo a turn: equal start and end make a whole ellipse.
+TEST(PocketInput, DxfHugeAnglesAreTakenModuloATurn) {
+  const std::string e =
+      "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n0\n20\n0\n10\n100\n20\n0\n10\n100\n20\n100\n10\n0\n20\n"
+      "100\n0\nELLIPSE\n10\n50\n20\n50\n11\n10\n21\n0\n40\n0.5\n41\n1e300\n42\n1e300\n";
+  auto p = parse_pocket_dxf(dxf(e), "h.dxf", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  EXPECT_NEAR(region_area(*p), 10000.0 - kPi * 50.0, 0.03);  // chords: perimeter x tol
+  auto arc = parse_pocket_dxf(dxf("0\nARC\n10\n0\n20\n0\n40\n5\n50\n1e300\n51\n-"
+                                  "1e300\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n"),
+                              "a.dxf");
+  EXPECT_FALSE(arc.ok());  // returns (an open chain), rather than spinning
+}
+
 TEST(PocketInput, DxfOpenChainIsRejectedWithItsEnds) {
   const std::string e =
       "0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nLINE\n10\n10\n20\n0\n11\n10\n21\n10\n";
