@@ -14,8 +14,6 @@ namespace swarf {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Lattice points per window of a scan line (TriSliceTop::collect_window).
-constexpr std::size_t kWindow = 8;
 
 std::vector<double> positions(double from, double to, double step) {
   std::vector<double> out;
@@ -210,10 +208,6 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
   std::vector<std::vector<Vec3>> lines(across.size());
   parallel_for(across.size(), ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;
-    const std::size_t nwin = (along.size() + kWindow - 1) / kWindow;
-    std::vector<TriSliceTop::Window> wins(nwin);
-    std::vector<unsigned char> wstate(nwin, 0);  // 0 no query yet, 1 one query, 2 collected
-    std::vector<ScanHint> whint(nwin);
     auto eval = [&](std::size_t k, const ScanHint& from) {
       const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
       Sample out{{}, from};
@@ -230,26 +224,7 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
           return out;
         }
       }
-      // Window queries (envelope_window.cpp): the second query of a stretch of kWindow lattice
-      // points proves the stretch once from the first one's winners, and it and the later
-      // queries of the stretch read only the segments that proof kept. Same answers.
-      const std::size_t w = k / kWindow;
-      if (wstate[w] == 1) {
-        const std::size_t k0 = w * kWindow, k1 = std::min(k0 + kWindow, along.size()) - 1;
-        auto at = [&](std::size_t kk) {
-          return along_x ? Vec2{along[kk], across[i]} : Vec2{across[i], along[kk]};
-        };
-        top.collect_window(at(k0), at(k1), R, primary, whint[w], wins[w]);
-        wstate[w] = 2;
-      }
-      double c;
-      if (wstate[w] == 2) {
-        c = top.centre_height(xy, R, primary, &out.hint, wins[w]);
-      } else {
-        c = top.centre_height(xy, R, primary, &out.hint);
-        wstate[w] = 1;
-        whint[w] = out.hint;
-      }
+      const double c = top.centre_height(xy, R, primary, &out.hint);
       const double z = c > -kInf ? std::max(c - tool_radius_mm, floor_z) : floor_z;
       out.p = {xy.x, xy.y, std::min(z, clip_z)};
       return out;

@@ -47,17 +47,6 @@ class SliceEnvelope {
   std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
 
-  /// Window queries (envelope_window.cpp): the segments that can hold a ball of radius r_mm
-  /// centred anywhere over the axis-parallel segment [a, b] higher than `floor` (a superset,
-  /// sorted, no repeats), and centre_height over those only. Where floor is a lower bound of
-  /// the answer at p, the two give the same answer as centre_height.
-  /// The floor runs linearly from floor_a at a to floor_b at b.
-  void collect(Vec2 a, Vec2 b, double r_mm, double floor_a, double floor_b,
-               std::vector<std::uint32_t>& out) const;
-  double centre_height_among(Vec2 p, double r_mm, double at_least,
-                             const std::vector<std::uint32_t>& ids,
-                             std::uint32_t* hint = nullptr) const;
-
  private:
   struct Seg {
     double s0, z0, s1, z1;  ///< along-line coordinate and height, s0 <= s1
@@ -105,20 +94,12 @@ class LevelEnvelope {
   double hint_height(Vec2 p, double r_mm, std::uint32_t hint) const;
   std::size_t segment_count() const { return nseg_; }
   std::size_t memory_bytes() const;
-  /// As SliceEnvelope's window queries (ids sorted by level, highest first).
-  void collect(Vec2 a, Vec2 b, double r_mm, double floor_a, double floor_b,
-               std::vector<std::uint32_t>& out) const;
-  double centre_height_among(Vec2 p, double r_mm, double at_least,
-                             const std::vector<std::uint32_t>& ids,
-                             std::uint32_t* hint = nullptr) const;
 
  private:
   struct Seg {
     double x0, y0, ex, ey, z;  ///< start, end - start (as the queries use it), level
   };
   static double drop_on(const Seg& g, Vec2 p, double r2);
-  static double level_excess(const Seg& g, Vec2 a, Vec2 dir, double len, double r, double f0,
-                             double m);
   std::size_t nseg_ = 0;
   std::vector<Seg> seg_;  ///< CSR items over the cells, in place, highest level first
   Vec2 origin_;
@@ -154,20 +135,6 @@ class TriSliceTop {
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,
                        ScanHint* hint = nullptr) const;
-  /// A stretch [a, b] of a scan line (along x or y) and the segments of each family that can
-  /// hold a ball over it above a lower bound of the answer all along it (collect_window).
-  struct Window {
-    bool valid = false;
-    std::vector<std::uint32_t> x, y, z;
-  };
-  /// Fills w from the hinted winners (their drops are concave along the line, so the lower of
-  /// their heights at a and b bounds the answer from below over the whole stretch); w.valid
-  /// stays false when no hinted winner reaches both ends.
-  void collect_window(Vec2 a, Vec2 b, double r_mm, Axis primary, const ScanHint& hint,
-                      Window& w) const;
-  /// centre_height over the window's segments only: the same answer for any p on [a, b].
-  /// `hint` must not be null.
-  double centre_height(Vec2 p, double r_mm, Axis primary, ScanHint* hint, const Window& w) const;
   const SliceEnvelope& family(Axis a) const { return a == Axis::kX ? x_ : y_; }
   const LevelEnvelope& levels() const { return z_; }
   /// Spacing of the slices the index reads: the model's pitch times the stride, mm.
