@@ -16,19 +16,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The nearest float at or above (below) v: a box in floats rounded outwards still holds its
-// segment, so a test that rejects against it would reject against the exact box too.
-float float_up(double v) {
-  float f = static_cast<float>(v);
-  if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
-}
-float float_down(double v) {
-  float f = static_cast<float>(v);
-  if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
-}
-
 }  // namespace
 
 SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, int stride) {
@@ -116,14 +103,12 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
     e.start_[c + 1] += e.start_[c];
   e.seg_.resize(e.start_.back());
   e.slice_of_.resize(e.start_.back());
-  e.box_.resize(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
   for (std::size_t j = 0; j < e.n_; ++j) {
     for (const Seg& s : per[j]) {
       for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b) {
         const std::size_t c = j * nb + static_cast<std::size_t>(b);
         e.seg_[fill[c]] = s;
-        e.box_[fill[c]] = {float_up(std::max(s.z0, s.z1)), float_down(s.s0), float_up(s.s1)};
         e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
         binmax[c] = std::max({binmax[c], s.z0, s.z1});
       }
@@ -219,7 +204,7 @@ double SliceEnvelope::hint_height(Vec2 p, double r, std::uint32_t hint) const {
 }
 
 std::size_t SliceEnvelope::memory_bytes() const {
-  return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t) + sizeof(Box)) +
+  return seg_.size() * (sizeof(Seg) + sizeof(std::uint32_t)) +
          start_.size() * sizeof(std::uint32_t) + supermax_.size() * sizeof(double) +
          (line_.size() + blockline_.size()) * sizeof(Line);
 }
@@ -364,17 +349,13 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
         if (need_line >= 0.0 && rho2 - tp * tp <= need_line * need_line) continue;
         for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
           // The segment's box first: no point of it rises above top, nor lies nearer than dx
-          // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2). Read
-          // from the float boxes (rounded outwards: a looser box, the same answers), so most
-          // rejected segments cost 12 bytes of memory, not 48 (fifth round).
-          const Box& f = box_[k];
-          const double need = best - static_cast<double>(f.top);
+          // along the line, so the disc cannot sit higher than top + sqrt(rho2 - dx^2).
+          const Seg& g = seg_[k];
+          const double need = best - std::max(g.z0, g.z1);
           if (need >= 0.0) {
-            const double dx =
-                std::max({static_cast<double>(f.s0) - s, 0.0, s - static_cast<double>(f.s1)});
+            const double dx = std::max({g.s0 - s, 0.0, s - g.s1});
             if (rho2 - dx * dx <= need * need) continue;
           }
-          const Seg& g = seg_[k];
           // Then the segment's line: a disc centred at height best whose signed distance
           // from the line is at least rho sits on or above the tangent position, the highest
           // the disc can rest on any point of the segment (end points included). Three

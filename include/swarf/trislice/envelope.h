@@ -61,14 +61,7 @@ class SliceEnvelope {
   std::size_t nseg_ = 0;                 ///< upward edges (each copied into the bins it spans)
   std::vector<Seg> seg_;                 ///< CSR items over (slice, bin), in place
   std::vector<std::uint32_t> slice_of_;  ///< slice index of each item
-  /// Per item, its box in floats rounded outwards (highest z up, s range out): the box test
-  /// of a query reads 12 bytes per segment instead of the 48-byte Seg, and rejects a subset
-  /// of what the exact box would (so the answers do not change).
-  struct Box {
-    float top, s0, s1;
-  };
-  std::vector<Box> box_;
-  std::vector<std::uint32_t> start_;  ///< CSR over (slice, bin)
+  std::vector<std::uint32_t> start_;     ///< CSR over (slice, bin)
   /// Per (slice, bin): a line z <= a + b (s - bin centre) above every upward edge in the bin,
   /// and k = b / sqrt(1 + b^2) (where a disc's top over that line peaks). Much tighter than
   /// binmax_ on a slope, so slices near the contact are ruled out before their segments.
