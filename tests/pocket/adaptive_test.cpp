@@ -136,6 +136,28 @@ TEST(AdaptivePocket, IslandsLessThanAMillimetreFromTheWalls) {
   expect_correct(p, run(p, 8.0, 0.8), 0.74, 0.79);
 }
 
+// A comb: four teeth 15 mm wide and 40 mm deep off a 20 mm spine (from bench/pocket_stress.sh,
+// a shape no tuning used): every tooth is a dead end the tool must enter and leave.
+TEST(AdaptivePocket, CombOfNarrowTeeth) {
+  const Pocket p = make_pocket({{0, 0},
+                                {90, 0},
+                                {90, 60},
+                                {75, 60},
+                                {75, 20},
+                                {60, 20},
+                                {60, 60},
+                                {45, 60},
+                                {45, 20},
+                                {30, 20},
+                                {30, 60},
+                                {15, 60},
+                                {15, 20},
+                                {0, 20}},
+                               {}, "comb")
+                       .value();
+  expect_correct(p, run(p, 6.0, 1.2), 0.91, 0.91);
+}
+
 TEST(AdaptivePocket, ChannelBarelyWiderThanTheTool) {
   Pocket ch = make_pocket({{0, 0}, {40, 0}, {40, 8.8}, {0, 8.8}}, {}, "channel 8.8 x 40").value();
   const Outcome o = run(ch, 8.0, 1.6);
