@@ -107,7 +107,7 @@ struct Nurbs {
       wy[static_cast<std::size_t>(j)] = ctrl[i].y * w;
       ww[static_cast<std::size_t>(j)] = w;
     }
-    for (int r = 1; r <= p; ++r)
+    for (int r = 1; r <= p; ++r) {
       for (int j = p; j >= r; --j) {
         const double lo = knots[static_cast<std::size_t>(j + k - p)];
         const double hi = knots[static_cast<std::size_t>(j + 1 + k - r)];
@@ -117,6 +117,7 @@ struct Nurbs {
         wy[u] = (1.0 - a) * wy[v] + a * wy[u];
         ww[u] = (1.0 - a) * ww[v] + a * ww[u];
       }
+    }
     const std::size_t e = static_cast<std::size_t>(p);
     return {wx[e] / ww[e], wy[e] / ww[e]};
   }
@@ -166,10 +167,11 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
   if (!read_pairs(text, pairs, error)) return bad_input(src + ": " + error);
   // Find the ENTITIES section.
   std::size_t i = 0;
-  for (; i + 1 < pairs.size(); ++i)
+  for (; i + 1 < pairs.size(); ++i) {
     if (pairs[i].code == 0 && pairs[i].value == "SECTION" && pairs[i + 1].code == 2 &&
         pairs[i + 1].value == "ENTITIES")
       break;
+  }
   if (i + 1 >= pairs.size()) return bad_input(src + ": no ENTITIES section");
   i += 2;
   std::vector<Ring> loops;

@@ -577,15 +577,17 @@ Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
         ring.push_back({cx + q.x * rx / r, cy + q.y * ry / r});
       loops.push_back(std::move(ring));
     }
-    for (std::size_t k = first_new; k < loops.size(); ++k)
+    for (std::size_t k = first_new; k < loops.size(); ++k) {
       for (Vec2& q : loops[k])
         q = xf.apply(q);
+    }
     if (loops.size() > 10000) return bad_input(src + ": more than 10000 outlines");
   }
   if (!saw_svg) return bad_input(src + ": no <svg> element");
-  for (Ring& r : loops)
+  for (Ring& r : loops) {
     for (Vec2& p : r)
       p.y = -p.y;  // SVG's y axis points down
+  }
   return pocket::pocket_from_loops(std::move(loops), source);
 }
 
