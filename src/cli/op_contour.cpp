@@ -1,6 +1,7 @@
 // `swarf contour`: contour-parallel pocket clearing (swarf/pocket/contour_parallel.h), the
 // baseline for the adaptive pocket.
 #include "cli/operation.h"
+#include "cli/pocket_params.h"
 #include "swarf/pocket/contour_parallel.h"
 #include "swarf/toolpath/metrics.h"
 
@@ -37,27 +38,15 @@ Result<OperationOutput> run(const OperationInput& in) {
 }
 
 const OperationRegistrar kRegistrar(Operation{
-    "contour",
-    "contour-parallel pocket clearing (offset rings, helix entry)",
-    "pocket outline: .json {outer, islands}, .svg or .dxf (mm)",
-    true,
-    true,
-    {
-        number_param("stepover", 0.0,
-                     "radial stepover between rings, mm (0 = 10 % of the diameter)"),
-        Param{"outside_in", ParamType::kBool, false, "cut from the wall inwards", false},
-        Param{"conventional", ParamType::kBool, false, "conventional instead of climb milling",
-              false},
-        number_param("depth", 6.0, "pocket depth below the top, mm"),
-        number_param("stepdown", 0.0, "depth per layer, mm (0 = whole depth)"),
-        number_param("floor_stock", 0.0, "stock left on the floor, mm"),
-        number_param("wall_stock", 0.0, "stock left on walls and islands, mm"),
-        number_param("top_z", 0.0, "top of the stock, mm"),
-        number_param("clearance_z", 5.0, "rapid plane, mm"),
-        number_param("feed", 1000.0, "cutting feed, mm/min"),
-        number_param("plunge_feed", 300.0, "helix feed, mm/min"),
-        number_param("ramp_angle", 3.0, "helix descent angle, degrees"),
-    },
+    "contour", "contour-parallel pocket clearing (offset rings, helix entry)",
+    "pocket outline: .json {outer, islands}, .svg or .dxf (mm)", true, true,
+    with_pocket_layer_params(
+        {
+            number_param("stepover", 0.0,
+                         "radial stepover between rings, mm (0 = 10 % of the diameter)"),
+            Param{"outside_in", ParamType::kBool, false, "cut from the wall inwards", false},
+        },
+        "helix", {}),
     run});
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "cli/operation.h"
+#include "cli/pocket_params.h"
 #include "swarf/pocket/adaptive.h"
 #include "swarf/report/image.h"
 #include "swarf/report/plot.h"
@@ -108,38 +109,29 @@ Result<OperationOutput> run(const OperationInput& in) {
 }
 
 const OperationRegistrar kRegistrar(Operation{
-    "pocket",
-    "adaptive (constant-engagement) pocket clearing, seed 000",
-    "pocket outline: .json {outer, islands}, .svg or .dxf (mm)",
-    true,
-    true,
-    {
-        Param{"stepover", ParamType::kNumber, nullptr,
-              "target radial stepover, mm (default 10 % of the tool diameter)", true},
-        Param{"engagement", ParamType::kNumber, nullptr,
-              "target engagement angle instead of --stepover, degrees", true},
-        number_param("tolerance", 10.0, "engagement band accepted without search, % of target"),
-        number_param("step", 0.0, "path step length, mm (0 = tool diameter / 20)"),
-        number_param("max_deviation", 90.0, "largest turn between two steps, degrees"),
-        number_param("resolution", 0.0, "simulation pixel size, mm (0 = automatic)"),
-        Param{"conventional", ParamType::kBool, false, "conventional instead of climb milling",
-              false},
-        number_param("depth", 6.0, "pocket depth below the top, mm"),
-        number_param("stepdown", 0.0, "depth per layer, mm (0 = whole depth)"),
-        number_param("floor_stock", 0.0, "stock left on the floor, mm"),
-        number_param("wall_stock", 0.0, "stock left on walls and islands, mm"),
-        number_param("top_z", 0.0, "top of the stock, mm"),
-        number_param("clearance_z", 5.0, "rapid plane, mm"),
-        number_param("feed", 1000.0, "cutting feed, mm/min"),
-        number_param("plunge_feed", 300.0, "helix and ramp feed, mm/min"),
-        number_param("ramp_angle", 3.0, "helix and ramp descent angle, degrees"),
-        number_param("helix_radius", 0.0, "helix radius, mm (0 = 0.3 x diameter, or what fits)"),
-        Param{"plunge_candidates", ParamType::kInteger, 1,
-              "plunge points tried along the medial axis (the fastest path wins)", false},
-        Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
-        number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),
-        Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},
-    },
+    "pocket", "adaptive (constant-engagement) pocket clearing, seed 000",
+    "pocket outline: .json {outer, islands}, .svg or .dxf (mm)", true, true,
+    with_pocket_layer_params(
+        {
+            Param{"stepover", ParamType::kNumber, nullptr,
+                  "target radial stepover, mm (default 10 % of the tool diameter)", true},
+            Param{"engagement", ParamType::kNumber, nullptr,
+                  "target engagement angle instead of --stepover, degrees", true},
+            number_param("tolerance", 10.0, "engagement band accepted without search, % of target"),
+            number_param("step", 0.0, "path step length, mm (0 = tool diameter / 20)"),
+            number_param("max_deviation", 90.0, "largest turn between two steps, degrees"),
+            number_param("resolution", 0.0, "simulation pixel size, mm (0 = automatic)"),
+        },
+        "helix and ramp",
+        {
+            number_param("helix_radius", 0.0,
+                         "helix radius, mm (0 = 0.3 x diameter, or what fits)"),
+            Param{"plunge_candidates", ParamType::kInteger, 1,
+                  "plunge points tried along the medial axis (the fastest path wins)", false},
+            Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
+            number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),
+            Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},
+        }),
     run});
 
 }  // namespace
