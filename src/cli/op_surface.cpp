@@ -41,9 +41,7 @@ Result<OperationOutput> scan_open_mesh(const OperationInput& in, const Mesh& mes
                                        OperationOutput out) {
   const Context& ctx = in.ctx != nullptr ? *in.ctx : default_context();
   const Tool& tool = *in.tool;
-  SWARF_RETURN_IF_ERROR(validate(sp));
-  if (tool.kind != ToolKind::kBall)
-    return bad_parameter("surface paths are for a ball end mill, got " + tool.description());
+  SWARF_RETURN_IF_ERROR(validate(sp));  // before the drop (scan_finishing_from_cl checks too)
   const double s = sp.stock_to_leave_mm;
   const auto t0 = std::chrono::steady_clock::now();
   auto dc = DropCutter::build(mesh, CutterShape{tool.radius() + s, tool.radius() + s});
@@ -66,43 +64,18 @@ Result<OperationOutput> scan_open_mesh(const OperationInput& in, const Mesh& mes
       q.z += s;
   }
   std::string csv = cl_csv(lines);
-  Toolpath tp;
-  tp.name = "drop-cutter scan finishing (open mesh)";
-  tp.tool_number = tool.number;
-  tp.tool_description = tool.description();
-  tp.tool_diameter_mm = tool.diameter_mm;
-  tp.clearance_z_mm = dc->mesh_bounds().max.z + s + 5.0;
-  auto tip_at = [&](Vec2 xy) { return std::max(dc->drop_z(xy), floor_z - s) + s; };
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    std::vector<Vec3> line = lines[i];
-    if (sp.zigzag && i % 2 == 1) std::reverse(line.begin(), line.end());
-    line = sp.tolerance_mm > 0.0 ? simplify_polyline(line, sp.tolerance_mm) : line;
-    if (sp.zigzag && i > 0) {
-      // Stay down: follow the surface from the end of the last line to this one.
-      const Vec3 a = tp.position(), b = line.front();
-      const int n =
-          std::max(1, static_cast<int>(std::ceil(distance(a.xy(), b.xy()) / sp.sampling_mm)));
-      for (int k = 1; k < n; ++k) {
-        const Vec2 xy = a.xy() + (b.xy() - a.xy()) * (static_cast<double>(k) / n);
-        tp.feed_to({xy.x, xy.y, tip_at(xy)}, sp.feed_mm_min);
-      }
-      tp.feed_to(b, sp.feed_mm_min);
-    } else {
-      tp.rapid_to({line.front().x, line.front().y, tp.clearance_z_mm});
-      tp.plunge_to(line.front().z, sp.plunge_feed_mm_min);
-    }
-    for (std::size_t k = 1; k < line.size(); ++k)
-      tp.feed_to(line[k], sp.feed_mm_min);
-    if (!sp.zigzag) tp.retract();
-  }
-  if (sp.zigzag) tp.retract();
+  auto tp = scan_finishing_from_cl(
+      std::move(lines), tool, sp, dc->mesh_bounds().max.z + s + 5.0,
+      "drop-cutter scan finishing (open mesh)",
+      [&](Vec2 xy) { return std::max(dc->drop_z(xy), floor_z - s) + s; }, ctx);
+  if (!tp.ok()) return tp.status().with_context(in.input_path);
   out.summary["open_mesh"] = true;
   out.summary["open_edges"] = check.open_edges;
   out.summary["non_manifold_edges"] = check.non_manifold_edges;
   out.summary["cl_source"] = "exact drop-cutter (the mesh is not a closed solid)";
   out.summary["finishing_s"] = seconds_since(t0);
   out.summary["cl_points"] = cl->size();
-  out.toolpaths.push_back(std::move(tp));
+  out.toolpaths.push_back(std::move(tp).value());
   out.csv_override = std::move(csv);
   return out;
 }

@@ -336,10 +336,6 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
                                            const Tool& tool, const ScanParams& p,
                                            std::vector<std::vector<Vec3>> lines,
                                            const Context& ctx) {
-  SWARF_RETURN_IF_ERROR(need_ball(tool));
-  SWARF_RETURN_IF_ERROR(validate(p));
-  Toolpath tp =
-      new_toolpath(tool, "tri-slice scan finishing", clearance_of(p.clearance_z_mm, model, -kInf));
   const double R = tool.radius() + p.stock_to_leave_mm;
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
   const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
@@ -347,7 +343,20 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
     const double c = top.centre_height(xy, R, primary);
     return c > -kInf ? std::max(c - tool.radius(), floor_z) : floor_z;
   };
-  tp = lines_to_toolpath(std::move(lines), p, kInf, std::move(tp), cl_at, ctx.threads);
+  return scan_finishing_from_cl(std::move(lines), tool, p,
+                                clearance_of(p.clearance_z_mm, model, -kInf),
+                                "tri-slice scan finishing", cl_at, ctx);
+}
+
+Result<Toolpath> scan_finishing_from_cl(std::vector<std::vector<Vec3>> lines, const Tool& tool,
+                                        const ScanParams& p, double clearance_z_mm,
+                                        std::string name, const std::function<double(Vec2)>& cl_at,
+                                        const Context& ctx) {
+  SWARF_RETURN_IF_ERROR(need_ball(tool));
+  SWARF_RETURN_IF_ERROR(validate(p));
+  Toolpath tp =
+      lines_to_toolpath(std::move(lines), p, kInf,
+                        new_toolpath(tool, std::move(name), clearance_z_mm), cl_at, ctx.threads);
   if (tp.empty()) return Status{Error::kEmptyResult, "scan finishing: no CL points"};
   return tp;
 }

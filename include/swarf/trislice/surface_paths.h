@@ -3,7 +3,9 @@
 // Table 1, and contour (waterline) paths from its inflated xy slices. Positions are tool tips.
 #pragma once
 
+#include <functional>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "swarf/core/context.h"
@@ -119,6 +121,14 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
                                            const Tool& tool, const ScanParams& params,
                                            std::vector<std::vector<Vec3>> lines,
                                            const Context& ctx = default_context());
+
+/// The same finishing moves from CL lines (tool tips, each in the + direction) of any
+/// source, e.g. the exact drop-cutter on a mesh without an inside: `cl_at` gives the tip
+/// height for the zig-zag links, `clearance_z_mm` the rapid plane. Needs a ball end mill.
+Result<Toolpath> scan_finishing_from_cl(std::vector<std::vector<Vec3>> lines, const Tool& tool,
+                                        const ScanParams& params, double clearance_z_mm,
+                                        std::string name, const std::function<double(Vec2)>& cl_at,
+                                        const Context& ctx = default_context());
 
 /// Roughing scan per Table 1 (its stepover replaces params.stepover_mm).
 Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& top, const Tool& tool,
