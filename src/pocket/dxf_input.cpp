@@ -134,11 +134,7 @@ void sample_curve(std::vector<Vec2>& out, const F& f, double t0, Vec2 p0, double
                   double tol, int depth = 0) {
   const double tm = 0.5 * (t0 + t1);
   const Vec2 pm = f(tm);
-  auto off = [&](Vec2 q) {
-    const Vec2 d = p1 - p0;
-    const double len = norm(d);
-    return len < 1e-12 ? distance(q, p0) : std::abs(cross(d, q - p0)) / len;
-  };
+  auto off = [&](Vec2 q) { return pocket::point_line_distance(q, p0, p1); };
   const bool flat =
       off(pm) <= tol && off(f(0.5 * (t0 + tm))) <= tol && off(f(0.5 * (tm + t1))) <= tol;
   if (depth >= 16 || flat || out.size() > kMaxCurvePoints) {

@@ -41,6 +41,12 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return distance(p, a + ab * t);
 }
 
+double point_line_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  return len < 1e-12 ? distance(p, a) : std::abs(cross(d, p - a)) / len;
+}
+
 double distance_to_rings(const PolygonSet& region, Vec2 p) {
   double d = std::numeric_limits<double>::infinity();
   for (const Ring& r : region.rings)

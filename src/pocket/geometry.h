@@ -18,6 +18,9 @@ bool point_in_ring(const Ring& ring, Vec2 p);
 /// Inside the outer ring and outside every island (rings[0] outer, rings[1..] islands).
 bool point_in_region(const PolygonSet& region, Vec2 p);
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
+/// Distance from p to the line through a and b (to a when they coincide): the flatness
+/// measure of curve flattening (chord error).
+double point_line_distance(Vec2 p, Vec2 a, Vec2 b);
 /// Distance from p to the nearest edge of any ring.
 double distance_to_rings(const PolygonSet& region, Vec2 p);
 /// The nearest point to p on any ring's edges.

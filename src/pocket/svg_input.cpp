@@ -192,16 +192,10 @@ void append_svg_arc(std::vector<Vec2>& out, Vec2 p1, double rx, double ry, doubl
 
 // Bezier segments flattened by de Casteljau halving until the control points lie within
 // tol of the chord (the curve lies in their hull, so it is then within tol of the chord).
-double off_chord(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double len = norm(d);
-  if (len < 1e-12) return distance(p, a);
-  return std::abs(cross(d, p - a)) / len;
-}
-
 void append_cubic(std::vector<Vec2>& out, Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tol,
                   int depth = 0) {
-  if (depth >= 18 || std::max(off_chord(p1, p0, p3), off_chord(p2, p0, p3)) <= tol) {
+  if (depth >= 18 || std::max(pocket::point_line_distance(p1, p0, p3),
+                              pocket::point_line_distance(p2, p0, p3)) <= tol) {
     out.push_back(p3);
     return;
   }
