@@ -197,7 +197,11 @@ class VertexContacts {
     for (const Vec3& v : mesh.vertices)
       box.add(v.xy());
     if (box.empty()) return;
-    cell_ = std::max({radius_mm / 2.0, box.size().x / 2048.0, box.size().y / 2048.0, 1e-3});
+    // Cells of R / 8: a cell's nearest distance then bounds its vertices' reach closely. On a
+    // finely faceted smooth mesh every vertex comes within micrometres of the best contact,
+    // so only that bound prunes (65,000-triangle sphere, ø20 ball: finishing 0.9 s with R / 2,
+    // 0.53 s with R / 8 or R / 16, 0.48 s without vertices). At most 1024 cells a side.
+    cell_ = std::max({radius_mm / 8.0, box.size().x / 1024.0, box.size().y / 1024.0, 1e-3});
     origin_ = box.min;
     nx_ = static_cast<int>(box.size().x / cell_) + 1;
     ny_ = static_cast<int>(box.size().y / cell_) + 1;
