@@ -137,6 +137,7 @@ cli_check "pitch 0" surface "$OUT/sphere.stl" --tool ball:8 --pitch 0
 # pitch 1e-4 on this part (1.4 million) runs for minutes and takes several GB (not tried here).
 cli_check "pitch 1e-3" surface "$OUT/tall.stl" --tool ball:8 --pitch 0.001
 cli_check "pitch 1e-5" surface "$OUT/tall.stl" --tool ball:8 --pitch 0.00001
+cli_check "pitch 1, ø1" surface "$OUT/fins.stl" --tool ball:1 --pitch 1
 cli_check "stepover -1" surface "$OUT/sphere.stl" --tool ball:8 --stepover -1
 cli_check "sampling 1e-6" dropcut "$OUT/sphere.stl" --tool ball:8 --sampling 0.000001
 cli_check "ball:0" dropcut "$OUT/sphere.stl" --tool ball:0

@@ -559,6 +559,17 @@ Status validate(const ContourParams& p) {
 Result<std::vector<std::vector<Vec3>>> scan_cl_lines(const TriSliceTop& top, const Box3& bounds,
                                                      double tool_radius_mm, double extra_mm,
                                                      const ScanParams& p, const Context& ctx) {
+  // Eq. (1) holds a face between two slices only by slices within the ball's reach: from a
+  // pitch of 2 R on, a flat top midway is not seen and the ball sinks through it; from R on,
+  // the model's bound is a third of R. A silent gouge of that size is worse than an error.
+  const double R = tool_radius_mm + extra_mm;
+  if (top.pitch_mm() >= R) {
+    return bad_parameter("scan: slice pitch " + std::to_string(top.pitch_mm()) +
+                         " mm is not smaller than the ball radius " + std::to_string(R) +
+                         " mm: faces between slices would be missed or gouged (error bound " +
+                         std::to_string(trislice_height_error_bound_mm(top.pitch_mm(), R)) +
+                         " mm); use a pitch below a quarter of the radius");
+  }
   return cl_lines(top, bounds, tool_radius_mm, extra_mm, p, kInf,
                   effective_adaptive_tolerance_mm(p, top.pitch_mm(), tool_radius_mm + extra_mm),
                   ctx);

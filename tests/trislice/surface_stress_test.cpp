@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "swarf/dropcut/dropcut.h"
 #include "swarf/mesh/generate.h"
@@ -142,6 +143,35 @@ TEST(TriSliceStress, VertexContactsRemoveTheFirstOrderErrorAtCorners) {
   EXPECT_LE(with_vertices, 0.002) << "slices only: " << slices_only * 1e3 << " um";
   std::printf("corners: %.2f um below the exact CL with the slices alone, %.3f um with vertices\n",
               slices_only * 1e3, with_vertices * 1e3);
+}
+
+// A face between two slices is held only by slices within the ball's reach, so with a pitch of
+// 2 r or more a flat top midway between them is not seen at all and the ball sinks through it
+// (stress set: ø1 at pitch 1 mm, 500 um into the fins' plate); from a pitch of r on the model's
+// own bound, 3 sqrt(3) ds^2 / (16 r), is a third of the radius (67 um measured at 0.5 mm).
+// Such a scan is refused with a message instead of a silent gouge.
+TEST(TriSliceStress, ScanRefusesAPitchNotSmallerThanTheBallRadius) {
+  const Mesh plate = make_box({{0.3, 0.3, 0}, {9.7, 9.7, 2}});
+  ScanParams p;
+  p.stepover_mm = 0.5;
+  for (double pitch : {1.0, 0.5, 0.4}) {
+    auto model = build_trislice(plate, pitch);
+    ASSERT_TRUE(model.ok());
+    const TriSliceTop top = TriSliceTop::build(*model);
+    auto lines = scan_cl_lines(top, model->bounds, 0.5, 0.0, p);
+    if (pitch >= 0.5) {
+      ASSERT_FALSE(lines.ok()) << pitch;
+      EXPECT_EQ(lines.status().code(), Error::kBadParameter);
+      EXPECT_NE(lines.status().message().find("pitch"), std::string::npos);
+      continue;
+    }
+    ASSERT_TRUE(lines.ok()) << lines.status().message();
+    double lowest = 1e9;
+    for (const auto& line : *lines)
+      for (const Vec3& q : line)
+        lowest = std::min(lowest, q.z);
+    EXPECT_GE(lowest, 2.0 - trislice_height_error_bound_mm(pitch, 0.5) - 1e-9);
+  }
 }
 
 }  // namespace
