@@ -121,10 +121,11 @@ void intersect_intervals(std::vector<double>& a, const std::vector<double>& b,
       scratch.push_back(lo);
       scratch.push_back(hi);
     }
-    if (a[i + 1] < b[k + 1])
+    if (a[i + 1] < b[k + 1]) {
       i += 2;
-    else
+    } else {
       k += 2;
+    }
   }
   a.swap(scratch);
 }
@@ -137,9 +138,9 @@ void merge_intervals(std::vector<double>& a) {
   std::sort(iv.begin(), iv.end());
   a.clear();
   for (const auto& [lo, hi] : iv) {
-    if (!a.empty() && lo <= a.back())
+    if (!a.empty() && lo <= a.back()) {
       a.back() = std::max(a.back(), hi);
-    else {
+    } else {
       a.push_back(lo);
       a.push_back(hi);
     }
@@ -328,15 +329,17 @@ std::string residue_points_ply(const RestRegions& rest, double spacing_mm) {
   const double h = spacing_mm > 0.0 ? spacing_mm : rest.pitch_mm;
   const AgreedResidue agreed = agreed_residue(rest, h);
   const ThicknessMap& g = agreed.grid;
-  for (int j = 0; j < g.ny; ++j)
+  for (int j = 0; j < g.ny; ++j) {
     for (int i = 0; i < g.nx; ++i) {
       const auto& z = agreed.z[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx) +
                                static_cast<std::size_t>(i)];
       const double x = g.origin.x + (i + 0.5) * h, y = g.origin.y + (j + 0.5) * h;
-      for (std::size_t k = 0; k + 1 < z.size(); k += 2)
+      for (std::size_t k = 0; k + 1 < z.size(); k += 2) {
         for (double v = std::ceil(z[k] / h) * h; v <= z[k + 1]; v += h)
           pts.push_back({x, y, v});
+      }
     }
+  }
   std::ostringstream os;
   os << "ply\nformat ascii 1.0\ncomment swarf unmachinable regions (seed 001 section 3.2)\n"
      << "element vertex " << pts.size()
