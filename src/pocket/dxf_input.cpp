@@ -151,16 +151,64 @@ std::string fmt(Vec2 p) {
   return b;
 }
 
+// Millimetres per drawing unit for the HEADER's $INSUNITS (AutoCAD's codes); 0 where the
+// code names no length unit Swarf accepts. Unitless drawings (0) are taken as mm, as before.
+double mm_per_insunit(long code) {
+  switch (code) {
+    case 0:
+    case 4:
+      return 1.0;  // unitless, millimetres
+    case 1:
+      return 25.4;  // inches
+    case 2:
+      return 304.8;  // feet
+    case 5:
+      return 10.0;  // centimetres
+    case 6:
+      return 1000.0;  // metres
+    case 8:
+      return 25.4e-6;  // microinches
+    case 9:
+      return 0.0254;  // mils
+    case 10:
+      return 914.4;  // yards
+    case 13:
+      return 1e-3;  // microns
+    case 14:
+      return 100.0;  // decimetres
+    default:
+      return 0.0;
+  }
+}
+
 }  // namespace
 
 Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
                                 const CurveInputOptions& options) {
   const std::string src(source);
-  const double tol = std::max(options.arc_tolerance_mm, 1e-6);
-  const double join = std::max(options.join_tolerance_mm, 1e-9);
   std::vector<Pair> pairs;
   std::string error;
   if (!read_pairs(text, pairs, error)) return bad_input(src + ": " + error);
+  // The drawing's unit ($INSUNITS in the HEADER section): coordinates are scaled to mm, and
+  // the tolerances (mm) are used in drawing units until then. A drawing in inches read as mm
+  // would come out 25.4 times too small.
+  double unit_mm = 1.0;
+  for (std::size_t k = 0; k + 1 < pairs.size(); ++k) {
+    if (pairs[k].code == 0 && pairs[k].value == "SECTION" && pairs[k + 1].code == 2 &&
+        pairs[k + 1].value == "ENTITIES")
+      break;
+    if (pairs[k].code != 9 || pairs[k].value != "$INSUNITS") continue;
+    char* end = nullptr;
+    const long code = std::strtol(pairs[k + 1].value.c_str(), &end, 10);
+    unit_mm = pairs[k + 1].code == 70 && *end == '\0' ? mm_per_insunit(code) : 0.0;
+    if (unit_mm <= 0.0) {
+      return bad_input(src + ":" + std::to_string(pairs[k + 1].line) + ": $INSUNITS '" +
+                       pairs[k + 1].value.substr(0, 20) +
+                       "' is not a length unit Swarf reads (0, 1, 2, 4, 5, 6, 8, 9, 10, 13, 14)");
+    }
+  }
+  const double tol = std::max(options.arc_tolerance_mm, 1e-6) / unit_mm;
+  const double join = std::max(options.join_tolerance_mm, 1e-9) / unit_mm;
   // Find the ENTITIES section.
   std::size_t i = 0;
   for (; i + 1 < pairs.size(); ++i) {
@@ -437,6 +485,11 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
     }
     loop.pop_back();  // the closing point repeats the first
     loops.push_back(std::move(loop));
+  }
+  if (unit_mm != 1.0) {
+    for (Ring& loop : loops)
+      for (Vec2& q : loop)
+        q = q * unit_mm;
   }
   return pocket::pocket_from_loops(std::move(loops), source);
 }

@@ -87,10 +87,15 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
   return out;
 }
 
-double residue_thickness(const SliceFamily& family, std::size_t j, double s) {
+namespace {
+
+// Residue intervals [z0, z1] of one vertical-family slice along the vertical line at in-plane
+// position s (x for the y family, y for the x family), sorted and disjoint.
+void residue_intervals(const SliceFamily& family, std::size_t j, double s,
+                       std::vector<double>& zs) {
   // Vertical line at in-plane position s: v = s for the y family ((u, v) = (z, x)), u = s for
   // the x family ((u, v) = (y, z)). Crossings sorted; normalized rings alternate in and out.
-  std::vector<double> zs;
+  zs.clear();
   const bool fam_y = family.axis == Axis::kY;
   for (const Ring& ring : family.slices[j].rings) {
     for (std::size_t k = 0; k < ring.size(); ++k) {
@@ -102,10 +107,59 @@ double residue_thickness(const SliceFamily& family, std::size_t j, double s) {
     }
   }
   std::sort(zs.begin(), zs.end());
+  if (zs.size() % 2 != 0) zs.pop_back();
+}
+
+// Intersection of two sorted lists of disjoint intervals (flattened pairs), in place in `a`.
+void intersect_intervals(std::vector<double>& a, const std::vector<double>& b,
+                         std::vector<double>& scratch) {
+  scratch.clear();
+  std::size_t i = 0, k = 0;
+  while (i + 1 < a.size() && k + 1 < b.size()) {
+    const double lo = std::max(a[i], b[k]), hi = std::min(a[i + 1], b[k + 1]);
+    if (lo < hi) {
+      scratch.push_back(lo);
+      scratch.push_back(hi);
+    }
+    if (a[i + 1] < b[k + 1]) {
+      i += 2;
+    } else {
+      k += 2;
+    }
+  }
+  a.swap(scratch);
+}
+
+// Union of a list of intervals (flattened pairs, any order), sorted and disjoint.
+void merge_intervals(std::vector<double>& a) {
+  std::vector<std::pair<double, double>> iv;
+  for (std::size_t i = 0; i + 1 < a.size(); i += 2)
+    iv.emplace_back(a[i], a[i + 1]);
+  std::sort(iv.begin(), iv.end());
+  a.clear();
+  for (const auto& [lo, hi] : iv) {
+    if (!a.empty() && lo <= a.back()) {
+      a.back() = std::max(a.back(), hi);
+    } else {
+      a.push_back(lo);
+      a.push_back(hi);
+    }
+  }
+}
+
+double total_length(const std::vector<double>& a) {
   double t = 0.0;
-  for (std::size_t k = 0; k + 1 < zs.size(); k += 2)
-    t += zs[k + 1] - zs[k];
+  for (std::size_t i = 0; i + 1 < a.size(); i += 2)
+    t += a[i + 1] - a[i];
   return t;
+}
+
+}  // namespace
+
+double residue_thickness(const SliceFamily& family, std::size_t j, double s) {
+  std::vector<double> zs;
+  residue_intervals(family, j, s, zs);
+  return total_length(zs);
 }
 
 double ThicknessMap::at(Vec2 p) const {
@@ -123,52 +177,70 @@ double ThicknessMap::max() const {
   return m;
 }
 
-ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
-  ThicknessMap map;
+namespace {
+
+// The map's grid, and per cell the heights at which every family analysed holds residue on
+// the cell's vertical line: sorted, disjoint intervals (flattened pairs).
+struct AgreedResidue {
+  ThicknessMap grid;  ///< geometry only (mm empty)
+  std::vector<std::vector<double>> z;
+};
+
+AgreedResidue agreed_residue(const RestRegions& rest, double cell_mm) {
+  AgreedResidue out;
+  ThicknessMap& map = out.grid;
   map.cell_mm = cell_mm > 0.0 ? cell_mm : rest.pitch_mm;
   const Box2 b = rest.bounds.xy();
   map.origin = b.min;
   map.nx = std::max(1, static_cast<int>(std::ceil(b.size().x / map.cell_mm)));
   map.ny = std::max(1, static_cast<int>(std::ceil(b.size().y / map.cell_mm)));
   const std::size_t ncell = static_cast<std::size_t>(map.nx) * static_cast<std::size_t>(map.ny);
-  const double kUncovered = -1.0;
-  map.mm.assign(ncell, kUncovered);
-  auto cell_of = [&](double x, double y) -> long {
-    const int i = static_cast<int>(std::floor((x - map.origin.x) / map.cell_mm));
-    const int j = static_cast<int>(std::floor((y - map.origin.y) / map.cell_mm));
-    if (i < 0 || j < 0 || i >= map.nx || j >= map.ny) return -1;
-    return static_cast<long>(j) * map.nx + i;
+
+  // Per family and cell: the residue's z intervals on the cell's vertical line (the union
+  // over the family's slices crossing the cell), and whether any slice of it crosses the cell.
+  struct Family {
+    std::vector<std::vector<double>> z;
+    std::vector<bool> covers;
   };
+  std::vector<Family> fams;
+  // Each cell reads a vertical family at its slice nearest to the cell's centre line (when
+  // that slice is within half a cell or half a pitch of it). Assigning slices to cells by
+  // flooring their levels instead put two slices in some cells and none in their neighbours
+  // (the levels sit on the cell edges, up to rounding), and the uncovered columns showed the
+  // other families' false residues as stripes (the torus part at 0.1 mm, outer fillet).
   for (Axis a : {Axis::kX, Axis::kY}) {
     const SliceFamily& f = rest.families[static_cast<std::size_t>(a)];
     if (f.size() == 0) continue;
-    // This family's own map: 0 on the rows (columns) its slices cross, the largest thickness
-    // found in a cell; uncovered elsewhere.
-    std::vector<double> own(ncell, kUncovered);
-    for (std::size_t j = 0; j < f.size(); ++j) {
-      const double level = f.level(j);
-      const int n_along = a == Axis::kY ? map.nx : map.ny;
+    Family own{std::vector<std::vector<double>>(ncell), std::vector<bool>(ncell, false)};
+    const bool fam_y = a == Axis::kY;
+    const int n_across = fam_y ? map.ny : map.nx, n_along = fam_y ? map.nx : map.ny;
+    const double reach = 0.5 * std::max(f.pitch_mm, map.cell_mm) + 1e-9;
+    for (int c = 0; c < n_across; ++c) {
+      const double centre = (fam_y ? map.origin.y : map.origin.x) + (c + 0.5) * map.cell_mm;
+      const long j = std::lround((centre - f.first_level) / f.pitch_mm);
+      if (j < 0 || j >= static_cast<long>(f.size())) continue;
+      const auto ju = static_cast<std::size_t>(j);
+      if (std::abs(f.level(ju) - centre) > reach) continue;
       for (int k = 0; k < n_along; ++k) {
-        const double s = (a == Axis::kY ? map.origin.x : map.origin.y) + (k + 0.5) * map.cell_mm;
-        const long c = a == Axis::kY ? cell_of(s, level) : cell_of(level, s);
-        if (c < 0) continue;
-        const double t = f.slices[j].empty() ? 0.0 : residue_thickness(f, j, s);
-        own[static_cast<std::size_t>(c)] = std::max(own[static_cast<std::size_t>(c)], t);
+        const double s = (fam_y ? map.origin.x : map.origin.y) + (k + 0.5) * map.cell_mm;
+        const std::size_t cu = fam_y ? static_cast<std::size_t>(c) * map.nx + k
+                                     : static_cast<std::size_t>(k) * map.nx + c;
+        own.covers[cu] = true;
+        if (f.slices[ju].empty()) continue;
+        residue_intervals(f, ju, s, own.z[cu]);
       }
     }
-    for (std::size_t c = 0; c < ncell; ++c) {
-      if (own[c] < 0.0) continue;
-      map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
-    }
+    fams.push_back(std::move(own));
   }
-  // The xy family: the residue's vertical extent is the number of levels whose residue covers
-  // the cell centre, times the pitch. It covers every cell, so it votes everywhere.
+  // The xy family: each level whose residue covers the cell centre adds the pitch's slab
+  // round that level. It covers every cell.
   const SliceFamily& fz = rest.families[static_cast<std::size_t>(Axis::kZ)];
   if (fz.size() > 0) {
-    std::vector<double> own(ncell, 0.0);
+    Family own{std::vector<std::vector<double>>(ncell), std::vector<bool>(ncell, true)};
     std::vector<double> xs;
     for (std::size_t l = 0; l < fz.size(); ++l) {
       if (fz.slices[l].empty()) continue;
+      const double z0 = fz.level(l) - 0.5 * fz.pitch_mm, z1 = fz.level(l) + 0.5 * fz.pitch_mm;
       const Box2 pb = bounds(fz.slices[l]);
       const int j0 =
           std::max(0, static_cast<int>(std::floor((pb.min.y - map.origin.y) / map.cell_mm)));
@@ -190,17 +262,50 @@ ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
           const int i1 = std::min(
               map.nx - 1,
               static_cast<int>(std::floor((xs[k + 1] - map.origin.x) / map.cell_mm - 0.5)));
-          for (int i = i0; i <= i1; ++i)
-            own[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
-                static_cast<std::size_t>(i)] += fz.pitch_mm;
+          for (int i = i0; i <= i1; ++i) {
+            auto& cz = own.z[static_cast<std::size_t>(j) * static_cast<std::size_t>(map.nx) +
+                             static_cast<std::size_t>(i)];
+            cz.push_back(z0);
+            cz.push_back(z1);
+          }
         }
       }
     }
-    for (std::size_t c = 0; c < ncell; ++c)
-      map.mm[c] = map.mm[c] < 0.0 ? own[c] : std::min(map.mm[c], own[c]);
+    fams.push_back(std::move(own));
   }
-  for (double& v : map.mm)
-    v = std::max(v, 0.0);
+  // A point is residue only where every family that sees it agrees (superposition, section
+  // 2.1): the z intervals are intersected, not the families' thicknesses compared. Each
+  // family's false residues (walls nearly parallel to its planes, offset.h) sit at heights
+  // the others do not share; the minimum of the thicknesses kept them wherever the other
+  // families had residue of their own at other heights on the same vertical line.
+  out.z.resize(ncell);
+  std::vector<double> scratch;
+  for (std::size_t c = 0; c < ncell; ++c) {
+    bool any = false;
+    std::vector<double>& acc = out.z[c];
+    for (Family& f : fams) {
+      if (!f.covers[c]) continue;
+      merge_intervals(f.z[c]);
+      if (!any) {
+        acc = f.z[c];
+        any = true;
+      } else {
+        intersect_intervals(acc, f.z[c], scratch);
+      }
+      if (acc.empty()) break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+ThicknessMap thickness_map(const RestRegions& rest, double cell_mm) {
+  AgreedResidue agreed = agreed_residue(rest, cell_mm);
+  ThicknessMap map = std::move(agreed.grid);
+  map.mm.resize(agreed.z.size());
+  for (std::size_t c = 0; c < agreed.z.size(); ++c)
+    map.mm[c] = total_length(agreed.z[c]);
   return map;
 }
 
@@ -217,26 +322,21 @@ Image thickness_image(const ThicknessMap& map, double min_mm) {
 }
 
 std::string residue_points_ply(const RestRegions& rest, double spacing_mm) {
+  // The agreed residue (as the map): each family alone also holds the false residue of its
+  // planes (a film along the whole outer fillet of the torus part, for one), which a viewer
+  // would show as unmachinable.
   std::vector<Vec3> pts;
   const double h = spacing_mm > 0.0 ? spacing_mm : rest.pitch_mm;
-  std::vector<double> us;
-  for (const SliceFamily& f : rest.families) {
-    for (std::size_t j = 0; j < f.size(); ++j) {
-      if (f.slices[j].empty()) continue;
-      // Scanline fill of the residue in its plane: rows v = k h, crossings sorted in u.
-      const Box2 b = bounds(f.slices[j]);
-      for (double v = std::ceil(b.min.y / h) * h; v <= b.max.y; v += h) {
-        us.clear();
-        for (const Ring& ring : f.slices[j].rings)
-          for (std::size_t k = 0; k < ring.size(); ++k) {
-            const Vec2 p0 = ring[k], p1 = ring[(k + 1) % ring.size()];
-            if ((p0.y <= v) == (p1.y <= v)) continue;
-            us.push_back(p0.x + (v - p0.y) / (p1.y - p0.y) * (p1.x - p0.x));
-          }
-        std::sort(us.begin(), us.end());
-        for (std::size_t k = 0; k + 1 < us.size(); k += 2)
-          for (double u = std::ceil(us[k] / h) * h; u <= us[k + 1]; u += h)
-            pts.push_back(from_plane({u, v}, f.level(j), f.axis));
+  const AgreedResidue agreed = agreed_residue(rest, h);
+  const ThicknessMap& g = agreed.grid;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const auto& z = agreed.z[static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx) +
+                               static_cast<std::size_t>(i)];
+      const double x = g.origin.x + (i + 0.5) * h, y = g.origin.y + (j + 0.5) * h;
+      for (std::size_t k = 0; k + 1 < z.size(); k += 2) {
+        for (double v = std::ceil(z[k] / h) * h; v <= z[k + 1]; v += h)
+          pts.push_back({x, y, v});
       }
     }
   }

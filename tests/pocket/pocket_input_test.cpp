@@ -159,6 +159,38 @@ std::string dxf(const std::string& entities) {
   return "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n";
 }
 
+// $INSUNITS in the HEADER: a 2 x 1 inch rectangle with a 0.25 inch circle island is read in
+// mm; a unit that is not a length is refused with the file and line.
+TEST(PocketInput, DxfDrawingUnitsAreHonoured) {
+  const std::string e =
+      "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n0\n20\n0\n10\n2\n20\n0\n10\n2\n20\n1\n10\n0\n20\n1\n"
+      "0\nCIRCLE\n10\n1\n20\n0.5\n40\n0.25\n";
+  auto header = [](const std::string& units) {
+    return "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n" + units +
+           "\n0\nENDSEC\n";
+  };
+  auto in = parse_pocket_dxf(header("1") + dxf(e), "in.dxf", {.arc_tolerance_mm = 0.0005});
+  ASSERT_TRUE(in.ok()) << in.status().to_string();
+  const double r = 0.25 * 25.4;
+  EXPECT_NEAR(region_area(*in), 2 * 25.4 * 25.4 - kPi * r * r, 0.0005 * 2 * kPi * r);
+  const Box2 box = bounds(in->region);
+  EXPECT_NEAR(box.max.x, 50.8, 1e-9);
+  EXPECT_NEAR(box.max.y, 25.4, 1e-9);
+  // Millimetres and unitless drawings read as they are; centimetres scale by 10.
+  auto mm = parse_pocket_dxf(header("4") + dxf(e), "mm.dxf");
+  auto none = parse_pocket_dxf(dxf(e), "none.dxf");
+  auto cm = parse_pocket_dxf(header("5") + dxf(e), "cm.dxf");
+  ASSERT_TRUE(mm.ok() && none.ok() && cm.ok());
+  EXPECT_NEAR(bounds(mm->region).max.x, 2.0, 1e-12);
+  EXPECT_NEAR(bounds(none->region).max.x, 2.0, 1e-12);
+  EXPECT_NEAR(bounds(cm->region).max.x, 20.0, 1e-12);
+  auto bad = parse_pocket_dxf(header("19") + dxf(e), "ly.dxf");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("ly.dxf:12"), std::string::npos)
+      << bad.status().to_string();
+  EXPECT_NE(bad.status().message().find("$INSUNITS"), std::string::npos);
+}
+
 TEST(PocketInput, DxfLinesAndArcChainIntoASlotShape) {
   // A stadium: two lines and two half-circle arcs of radius 5, written in scrambled order
   // and directions, chained into one loop. Area = 20*10 + pi*25.

@@ -47,6 +47,7 @@ Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
 
 /// ASCII DXF: LWPOLYLINE (with bulges), LINE, ARC and CIRCLE of the ENTITIES section,
 /// chained end to end into closed loops. An open chain is rejected with its end points.
+/// Coordinates are scaled to mm by the HEADER's $INSUNITS (unitless: mm).
 Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
                                 const CurveInputOptions& options = {});
 

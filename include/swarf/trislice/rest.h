@@ -17,8 +17,8 @@ namespace swarf {
 
 struct RestOptions {
   double tool_radius_mm = 4.0;
-  /// Families to analyse, indexed by Axis. Each gives its own top-view thickness (the xy
-  /// family as the number of levels holding residue times the pitch); the map keeps the least.
+  /// Families to analyse, indexed by Axis. The map keeps the heights where all of them hold
+  /// residue (the xy family: a pitch-thick slab round each level holding some).
   std::array<bool, 3> families{true, true, true};
   /// Residues thinner than this are removed (an opening by half of it in each slice) and
   /// left out of the map: the faceting of the mesh and the arc tolerance leave slivers of a
@@ -51,10 +51,11 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
 double residue_thickness(const SliceFamily& family, std::size_t j, double s);
 
 /// Top view of the residue: thickness (mm) per cell of `cell_mm` over the model's xy bounds;
-/// row 0 at min y. Where several families see a cell the smallest thickness counts: a region
-/// is unmachinable only if the representations agree (superposition, section 2.1); this
-/// removes the false residues a family shows where a wall is nearly parallel to its planes
-/// (offset.h).
+/// row 0 at min y. Each cell's vertical line is read in every family analysed (the vertical
+/// families at their slice nearest to the line) and the thickness is the length of the
+/// heights at which all of them hold residue: a point is unmachinable only if the
+/// representations agree (superposition, section 2.1). This removes the false residues a
+/// family shows where a wall is nearly parallel to its planes (offset.h).
 struct ThicknessMap {
   int nx = 0, ny = 0;
   double cell_mm = 0.1;
@@ -69,8 +70,9 @@ ThicknessMap thickness_map(const RestRegions& rest, double cell_mm);
 /// through red (the thickest residue).
 Image thickness_image(const ThicknessMap& map, double min_mm);
 
-/// The residue as points (ASCII PLY) a viewer can open: each rest polygon sampled on a grid
-/// of `spacing_mm` in its slice plane.
+/// The residue as points (ASCII PLY) a viewer can open: on each vertical line of a grid of
+/// `spacing_mm`, points every `spacing_mm` over the heights the map counts (where all the
+/// families analysed hold residue).
 std::string residue_points_ply(const RestRegions& rest, double spacing_mm);
 
 }  // namespace swarf
