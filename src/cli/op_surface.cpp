@@ -124,6 +124,9 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   sp.adaptive_model_fraction = p["adaptive_model_fraction"].get<double>();
   sp.feed_mm_min = feed;
   sp.plunge_feed_mm_min = plunge;
+  // The mesh's vertices are exact contacts too: the slices pass a convex corner up to a pitch
+  // away (first-order error, docs/trislice.md "Surface stress set").
+  sp.vertex_mesh = &stl->mesh;
   if (!solid) return scan_open_mesh(in, stl->mesh, check, sp, std::move(out));
   const auto t0 = std::chrono::steady_clock::now();
   // Scanning reads all three families (the xy one holds steep walls), waterlines only z.

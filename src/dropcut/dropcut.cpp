@@ -63,8 +63,13 @@ double ball_edge(Vec3 a, Vec3 b, Vec2 p, double r) {
   if (a2 < 1e-14) return -kInf;         // vertical edge: its end points decide
   const double qx = p.x - a.x, qy = p.y - a.y;
   const double A = qx * ux + qy * uy;
-  const double B = qx * qx + qy * qy;
-  const double disc = A * A * uz * uz - a2 * (B - A * A - r * r);
+  // The discriminant A^2 uz^2 - a2 (B - A^2 - r^2), B = qx^2 + qy^2, equals
+  // a2 r^2 - (qx uy - qy ux)^2 (Lagrange's identity a2 B - A^2 = cross^2). Written so, it has
+  // no difference of large squares: a ball exactly r from an edge (a grid point at a whole
+  // distance from an axis-aligned wall) gets disc = 0, not a rounding error of either sign
+  // that dropped the contact (the CL fell to the floor) or lifted it by sqrt(1e-15).
+  const double cr = qx * uy - qy * ux;
+  const double disc = a2 * r * r - cr * cr;
   if (disc < 0.0) return -kInf;
   const double s = (A * uz + std::sqrt(disc)) / a2;  // centre height above a.z
   const double t = A + s * uz;                       // foot of the perpendicular along the edge
@@ -76,18 +81,21 @@ double ball_edge(Vec3 a, Vec3 b, Vec2 p, double r) {
 bool disc_interval(Vec3 a, Vec3 b, Vec2 p, double R, double& t0, double& t1) {
   const Vec2 d = b.xy() - a.xy();
   const Vec2 f = a.xy() - p;
-  const double qa = norm_sq(d), qb = 2.0 * dot(f, d), qc = norm_sq(f) - R * R;
+  const double qa = norm_sq(d), qb = dot(f, d);
   if (qa < 1e-300) {
-    if (qc > 0.0) return false;
+    if (norm_sq(f) > R * R) return false;
     t0 = 0.0;
     t1 = 1.0;
     return true;
   }
-  const double disc = qb * qb - 4.0 * qa * qc;
+  // |f + t d|^2 = R^2: quarter discriminant qb^2 - qa (|f|^2 - R^2) = qa R^2 - cross(f, d)^2
+  // (as in ball_edge: exact 0 for a tool exactly R from an axis-aligned edge).
+  const double cr = cross(f, d);
+  const double disc = qa * R * R - cr * cr;
   if (disc < 0.0) return false;
   const double sq = std::sqrt(disc);
-  t0 = std::max(0.0, (-qb - sq) / (2.0 * qa));
-  t1 = std::min(1.0, (-qb + sq) / (2.0 * qa));
+  t0 = std::max(0.0, (-qb - sq) / qa);
+  t1 = std::min(1.0, (-qb + sq) / qa);
   return t0 <= t1;
 }
 

@@ -187,6 +187,30 @@ TEST(DropCutter, PlaneAndBoxEdgeClosedForms) {
   EXPECT_EQ(dc->drop({1.0, 3.0}).contact, ContactKind::kFacet);
 }
 
+// A tool whose axis lies exactly its radius from a vertical wall touches the wall's top edge
+// with its rim (closed solids: touching counts), so it rests at top - corner radius. Grid
+// points at whole distances from axis-aligned walls are common on real parts; the surface
+// stress set (bench/surface_stress.sh, touching_cubes) found the ball edge contact lost there
+// to rounding (B - A^2 computed as a difference of two large squares went a hair above R^2),
+// so the CL fell to the floor, 1 mm to 4 mm below the tri-slice scan.
+TEST(DropCutter, ToolExactlyItsRadiusFromAWallTouchesItsTopEdge) {
+  const Mesh box = box_mesh({0, 0, 0}, {10, 20, 5});
+  for (const CutterShape& shape : kShapes) {
+    auto dc = DropCutter::build(box, shape);
+    ASSERT_TRUE(dc.ok());
+    const double R = shape.radius_mm;
+    for (int k = 1; k < 200; ++k) {
+      const double y = 0.1 * k - 0.003 * (k % 7);  // not on the edge ends
+      if (y <= 0.0 || y >= 20.0) continue;
+      for (const Vec2 p : {Vec2{10.0 + R, y}, Vec2{-R, y}}) {
+        const DropResult res = dc->drop(p);
+        ASSERT_TRUE(res.hit()) << "R " << R << " at " << p.x << ", " << p.y;
+        EXPECT_NEAR(res.tip_z, 5.0 - shape.corner_radius_mm, 1e-9) << p.x << ", " << p.y;
+      }
+    }
+  }
+}
+
 TEST(DropCutter, GridIsIndependentOfThreadCount) {
   const Mesh sphere = uv_sphere({0, 0, 0}, 8.0, 48);
   auto dc = DropCutter::build(sphere, CutterShape{3.0, 3.0});
