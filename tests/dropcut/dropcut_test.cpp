@@ -94,12 +94,19 @@ TEST(DropCutter, IndexAgreesWithBruteForceOnRandomTriangles) {
   for (const CutterShape& shape : kShapes) {
     auto dc = DropCutter::build(soup, shape);
     ASSERT_TRUE(dc.ok()) << dc.status().to_string();
+    std::uniform_int_distribution<std::size_t> any(0, soup.size() + 5);
     for (int k = 0; k < 2000; ++k) {
       const Vec2 p{u(rng), u(rng)};
       const DropResult a = dc->drop(p), b = dc->drop_brute_force(p);
       ASSERT_EQ(a.hit(), b.hit());
       if (a.hit()) {
         ASSERT_EQ(a.tip_z, b.tip_z) << p.x << " " << p.y;
+      }
+      // A hint (any triangle, or none: an index past the end) changes nothing but the order.
+      const DropResult h = dc->drop(p, any(rng));
+      ASSERT_EQ(h.hit(), b.hit());
+      if (h.hit()) {
+        ASSERT_EQ(h.tip_z, b.tip_z) << p.x << " " << p.y;
       }
     }
   }

@@ -67,6 +67,10 @@ class DropCutter {
   }
 
   DropResult drop(Vec2 p) const;
+  /// The same tip height, trying triangle `hint` first (e.g. the previous point's contact
+  /// along a line): a good first contact lets the sorted list stop far sooner. Any index
+  /// is allowed; on an exact tie the contact kind and triangle may differ from drop(p).
+  DropResult drop(Vec2 p, std::size_t hint) const;
   double drop_z(Vec2 p) const { return drop(p).tip_z; }
   /// The same answer without the index or the early stop: every triangle is tried.
   /// For tests and for checking the index.
