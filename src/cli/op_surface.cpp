@@ -149,6 +149,8 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
     cp.radial_step_mm = p["stepover"].get<double>();
     cp.feed_mm_min = feed;
     cp.plunge_feed_mm_min = plunge;
+    // Steps and peaks between two levels count exactly (first-order error otherwise).
+    cp.critical_mesh = &stl->mesh;
     const auto t1 = std::chrono::steady_clock::now();
     auto tp = contour_paths(*model, tool, cp, ctx);
     if (!tp.ok()) return tp.status().with_context(in.input_path);

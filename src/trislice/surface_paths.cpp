@@ -660,6 +660,12 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
 
 PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
                             const ConvolutionOptions& options) {
+  return waterline_region(xy, tip_z, r_mm, options, {}, {});
+}
+
+PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
+                            const ConvolutionOptions& options, std::span<const PolygonSet> extra,
+                            std::span<const double> extra_levels) {
   // Ball centre at tip + r. Below the centre the ball meets slice j in a disc of radius
   // sqrt(r^2 - dz^2) (Eq. (1)); above it the shank is a cylinder of radius r, so every slice
   // higher than the centre counts at full radius: no undercut is ever entered from above.
@@ -667,18 +673,83 @@ PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
   OffsetOptions oo;
   oo.arc_tolerance_mm = options.arc_tolerance_mm;
   std::vector<PolygonSet> parts, above;
-  for (std::size_t j = 0; j < xy.size(); ++j) {
-    if (xy.slices[j].empty()) continue;
-    const double dz = zc - xy.level(j);
-    if (dz > r_mm) continue;
+  auto add = [&](const PolygonSet& section, double level) {
+    if (section.empty()) return;
+    const double dz = zc - level;
+    if (dz > r_mm) return;
     if (dz > 0.0)
-      parts.push_back(offset(xy.slices[j], std::sqrt(r_mm * r_mm - dz * dz), oo));
+      parts.push_back(offset(section, std::sqrt(r_mm * r_mm - dz * dz), oo));
     else
-      above.push_back(xy.slices[j]);
-  }
+      above.push_back(section);
+  };
+  for (std::size_t j = 0; j < xy.size(); ++j)
+    add(xy.slices[j], xy.level(j));
+  for (std::size_t k = 0; k < extra.size() && k < extra_levels.size(); ++k)
+    add(extra[k], extra_levels[k]);
   if (!above.empty()) parts.push_back(offset(unite(std::span<const PolygonSet>(above)), r_mm, oo));
   return unite(std::span<const PolygonSet>(parts));
 }
+
+namespace {
+
+// Heights where a mesh has a sharp feature no slice between two levels is sure to see: its
+// horizontal edges whose faces meet at more than kSharpDeg (the top of a step, a flat ridge)
+// and its sharp peaks (a vertex at least as high as the other corners of every triangle
+// round it, one of them steeper than kSharpDeg). Smooth ones (the rings of a revolved
+// surface, the top of a dome) are left to the slices: there the error is second-order, and
+// slicing them too cost 75 % more time on the torus part. Sorted, without repeats (1e-7
+// mm); kept also where a lattice level falls on one, since the slicer counts a vertex on the
+// plane as above it and that level's section has no trace of a peak there.
+std::vector<double> critical_heights(const Mesh& mesh) {
+  constexpr double kSharpDeg = 20.0;
+  const double cos_sharp = std::cos(deg_to_rad(kSharpDeg));
+  std::vector<Vec3> normal(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 n =
+        cross(mesh.corner(t, 1) - mesh.corner(t, 0), mesh.corner(t, 2) - mesh.corner(t, 0));
+    const double len = norm(n);
+    normal[t] = len > 0.0 ? n / len : Vec3{0, 0, 1};
+  }
+  std::vector<char> peak(mesh.vertices.size(), 1), steep(mesh.vertices.size(), 0);
+  struct Edge {
+    std::uint32_t a, b;
+    std::size_t tri;
+  };
+  std::vector<Edge> flat;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t ia = tri[k], ib = tri[(k + 1) % 3], ic = tri[(k + 2) % 3];
+      const double za = mesh.vertices[ia].z;
+      if (za < mesh.vertices[ib].z || za < mesh.vertices[ic].z) peak[ia] = 0;
+      if (normal[t].z < cos_sharp) steep[ia] = 1;
+      if (za == mesh.vertices[ib].z) flat.push_back({std::min(ia, ib), std::max(ia, ib), t});
+    }
+  }
+  std::vector<double> h;
+  std::sort(flat.begin(), flat.end(), [](const Edge& x, const Edge& y) {
+    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.tri < y.tri);
+  });
+  for (std::size_t i = 0; i < flat.size();) {
+    std::size_t j = i;
+    bool sharp = false;
+    while (j < flat.size() && flat[j].a == flat[i].a && flat[j].b == flat[i].b) {
+      if (dot(normal[flat[j].tri], normal[flat[i].tri]) < cos_sharp) sharp = true;
+      ++j;
+    }
+    if (sharp || j - i == 1) h.push_back(mesh.vertices[flat[i].a].z);  // or an open edge
+    i = j;
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (peak[v] != 0 && steep[v] != 0) h.push_back(mesh.vertices[v].z);
+  std::sort(h.begin(), h.end());
+  std::vector<double> out;
+  for (double z : h)
+    if (out.empty() || z - out.back() >= 1e-7) out.push_back(z);
+  return out;
+}
+
+}  // namespace
 
 Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool, const ContourParams& p,
                                const Context& ctx) {
@@ -695,11 +766,25 @@ Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool, con
   const double R = tool.radius() + p.stock_to_leave_mm;
   ConvolutionOptions co;
   co.arc_tolerance_mm = p.arc_tolerance_mm;
+  // Sections at the mesh's critical heights, taken 0.1 um below each (the solid under a
+  // horizontal face or a peak), so that features between two levels count exactly. Closer
+  // than that, the section round a peak is smaller than the polygon resolution and vanishes.
+  std::vector<double> crit;
+  std::vector<PolygonSet> crit_sections;
+  if (p.critical_mesh != nullptr) {
+    crit = critical_heights(*p.critical_mesh);
+    std::vector<double> below(crit.size());
+    for (std::size_t k = 0; k < crit.size(); ++k)
+      below[k] = crit[k] - 1e-4;
+    crit_sections = slice_mesh(*p.critical_mesh, Axis::kZ, below, {}, ctx);
+    crit = below;
+  }
   std::vector<std::vector<Ring>> rings(levels.size());
   parallel_for(levels.size(), ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;
     // The tool centre is at tip + r; with stock to leave it keeps r + stock from the part.
-    const PolygonSet region = waterline_region(xy, levels[i] + tool.radius() - R, R, co);
+    const PolygonSet region =
+        waterline_region(xy, levels[i] + tool.radius() - R, R, co, crit_sections, crit);
     OffsetOptions oo;
     oo.arc_tolerance_mm = p.arc_tolerance_mm;
     for (int k = p.radial_passes - 1; k >= 0; --k) {

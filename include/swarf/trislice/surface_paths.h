@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,12 @@ struct ContourParams {
   double feed_mm_min = 1000.0;
   double plunge_feed_mm_min = 300.0;
   double clearance_z_mm = kAuto;
+  /// Optional: the part's mesh (must outlive the call). The heights of its horizontal edges
+  /// and of its peaks (vertices above all their neighbours) are then sliced as well: a
+  /// feature that crosses no slice (the top edge of a step between two levels, a peak) is
+  /// otherwise missed by up to a pitch, a first-order error (a block top off the lattice:
+  /// the ball 20 um into the part at pitch 0.05 mm). nullptr: the tri-slice model alone.
+  const Mesh* critical_mesh = nullptr;
 };
 
 /// offset.h's bound on how far Eq. (1) can leave the ball centre below the true offset
@@ -148,6 +155,11 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
 /// slice above it). Its boundary is the waterline at z.
 PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
                             const ConvolutionOptions& options = {});
+/// The same with extra sections (e.g. at a mesh's critical heights): `extra_levels[k]` is the
+/// height of `extra[k]`.
+PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
+                            const ConvolutionOptions& options, std::span<const PolygonSet> extra,
+                            std::span<const double> extra_levels);
 
 /// Contour (waterline) paths, level by level from the top, outermost ring first.
 Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool,
