@@ -10,14 +10,17 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 threads="${SWARF_BENCH_THREADS:-1}"
 
+row=0
 run() {  # name input size-description -- swarf args...
   local name=$1 input=$2 size=$3
   shift 4
-  local start end
+  local start end dir
+  row=$((row + 1))
+  dir="$out/$row-$name"
   start=$(date +%s%N)
-  "$swarf" --quiet --threads "$threads" "$@" --report "$out/$name" >/dev/null
+  "$swarf" --quiet --threads "$threads" "$@" --report "$dir" >/dev/null
   end=$(date +%s%N)
-  printf '%s\t%s\t%s\t%s\t%s\n' "$name" "$input" "$size" "$(((end - start) / 1000000))" "$out/$name/summary.json"
+  printf '%s\t%s\t%s\t%s\t%s\n' "$name" "$input" "$size" "$(((end - start) / 1000000))" "$dir/summary.json"
 }
 
 pocket=examples/l-pocket-islands.json
@@ -33,6 +36,10 @@ kiri=examples/parts/kirimoto_pocket-test.stl
   run dropcut "torus part" "exact drop-cutter, same grid" -- \
     dropcut "$torus" --tool ball:8 --stepover 0.5 --sampling 0.1 --csv "$out/d.csv"
   run rest "torus part" "D8 ball, pitch 0.5" -- rest "$torus" --tool ball:8 --pitch 0.5
+  run rest "torus part" "D8 ball, pitch 0.1 (the issue's example)" -- \
+    rest "$torus" --tool ball:8 --pitch 0.1
+  run waterline "torus part" "contour, D8 ball, stepdown 1, pitch 0.05" -- \
+    surface "$torus" --tool ball:8 --pattern contour --stepdown 1 --pitch 0.05 -o "$out/w.nc"
   run rough "Kiri:Moto pocket test" "D10, 4/2/0.5 mm, GA" -- \
     rough "$kiri" --tool flat:10 --stepover 4 --stepdown 2 --stock-to-leave 0.5 --margin 10 -o "$out/r.nc"
   run simulate "seed 001 validation cut" "D8 ball, 3600 rpm, pitch 0.1" -- \
@@ -47,6 +54,7 @@ keys = {
   "surface": ["cl_points", "model_s", "finishing_s", "machining_time_s"],
   "dropcut": ["cl_points", "max_z_mm"],
   "rest": ["residue_area_mm2", "max_thickness_mm"],
+  "waterline": ["model_s", "contour_s", "machining_time_s"],
   "rough": ["lift_offs", "air_length_mm", "total_length_mm", "regions"],
   "simulate": ["machining_time_s", "peak_force_n", "mean_force_n", "collisions"],
 }
