@@ -67,12 +67,12 @@ namespace {
 
 // Undirected edge ids per triangle corner: the same for every axis, so built once per call.
 struct MeshEdges {
-  explicit MeshEdges(const Mesh& mesh);
+  void build(const Mesh& mesh);
   std::vector<std::array<std::uint32_t, 3>> tri_edges;  ///< edge id of corner k -> k+1
   std::vector<std::array<std::uint32_t, 2>> edge_ends;  ///< vertex indices, lower first
 };
 
-MeshEdges::MeshEdges(const Mesh& mesh) {
+void MeshEdges::build(const Mesh& mesh) {
   // One sort of (undirected edge key, corner slot): equal keys are adjacent, so edge ids are
   // handed out in key order without searching for each corner.
   const std::size_t n = mesh.size();
@@ -164,10 +164,13 @@ void Slicer::build_level_lists(const std::vector<double>& levels) {
     r0 = first_above(lo);
     r1 = lo < hi ? first_above(hi) : r0;
   };
+  // Each triangle's run found once (two binary searches), kept for the fill pass.
+  std::vector<std::array<std::uint32_t, 2>> runs(n);
   level_start_.assign(levels.size() + 1, 0);
   for (std::size_t t = 0; t < n; ++t) {
     std::size_t r0 = 0, r1 = 0;
     run(t, r0, r1);
+    runs[t] = {static_cast<std::uint32_t>(r0), static_cast<std::uint32_t>(r1)};
     for (std::size_t r = r0; r < r1; ++r)
       ++level_start_[sorted[r].second + 1];
   }
@@ -175,12 +178,9 @@ void Slicer::build_level_lists(const std::vector<double>& levels) {
     level_start_[i + 1] += level_start_[i];
   level_tris_.resize(level_start_.back());
   std::vector<std::uint32_t> fill(level_start_.begin(), level_start_.end() - 1);
-  for (std::size_t t = 0; t < n; ++t) {  // ascending triangle order within each level
-    std::size_t r0 = 0, r1 = 0;
-    run(t, r0, r1);
-    for (std::size_t r = r0; r < r1; ++r)
+  for (std::size_t t = 0; t < n; ++t)  // ascending triangle order within each level
+    for (std::uint32_t r = runs[t][0]; r < runs[t][1]; ++r)
       level_tris_[fill[sorted[r].second]++] = static_cast<std::uint32_t>(t);
-  }
 }
 
 Vec2 Slicer::edge_point(std::uint32_t edge, double level) const {
@@ -239,8 +239,9 @@ PolygonSet Slicer::slice(std::size_t level_index, double level, const SliceOptio
   if (segs.empty()) return {};
 
   // 2. Chain by edge id. Sorted by (from, to) so that the walk is deterministic.
+  // Compared as one 64-bit key: the same order, without the branch on equal starts.
   std::sort(segs.begin(), segs.end(), [](const Segment& a, const Segment& b) {
-    return a.from != b.from ? a.from < b.from : a.to < b.to;
+    return (std::uint64_t{a.from} << 32 | a.to) < (std::uint64_t{b.from} << 32 | b.to);
   });
   thread_local ChainScratch scratch;
   scratch.reserve(edge_ends_.size());
@@ -353,9 +354,16 @@ std::array<std::vector<PolygonSet>, 3> slice_mesh_axes(
   }
   if (mesh.empty() || total == 0) return out;
   ctx.report("slice", 0.0);
-  const MeshEdges edges(mesh);
+  // The edge table and the three axes' level lists are independent (a Slicer only keeps
+  // references to the table until it slices): four tasks, the edge table (the longest) first.
+  MeshEdges edges;
   std::vector<std::unique_ptr<Slicer>> slicers(3);
-  parallel_for(3, ctx.threads, [&](std::size_t a) {
+  parallel_for(4, ctx.threads, [&](std::size_t k) {
+    if (k == 0) {
+      edges.build(mesh);
+      return;
+    }
+    const std::size_t a = k - 1;
     if (!levels[a].empty())
       slicers[a] = std::make_unique<Slicer>(mesh, edges, static_cast<Axis>(a), levels[a]);
   });

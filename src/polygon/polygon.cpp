@@ -30,8 +30,15 @@ constexpr double kCleanDistance = 1.5;
 // keep a wide safety margin. 1e12 mm is far outside any machine.
 constexpr double kMaxAbsMm = 1e12;
 
+// std::llround of the scaled value (halves away from zero) without the call into libm: below
+// 2^52 the difference from the truncation is the exact fraction, above it every double is an
+// integer (|v| <= 1e17 after the clamp, within int64).
 cl::cInt to_grid(double v) {
-  return static_cast<cl::cInt>(std::llround(std::clamp(v, -kMaxAbsMm, kMaxAbsMm) * kScale));
+  const double s = std::clamp(v, -kMaxAbsMm, kMaxAbsMm) * kScale;
+  const auto i = static_cast<cl::cInt>(s);
+  const double f = s - static_cast<double>(i);
+  // Branch free: the fraction is as likely above a half as below.
+  return i + static_cast<cl::cInt>(f >= 0.5) - static_cast<cl::cInt>(f <= -0.5);
 }
 
 cl::Path to_path(const std::vector<Vec2>& ring) {

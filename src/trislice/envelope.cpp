@@ -18,66 +18,68 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, int stride) {
-  SliceFamily strided;
-  if (stride > 1) {
-    // Keep the slices on the coarser lattice (level index divisible by stride), so coarse
-    // and fine envelopes of one model share their slices.
-    strided.axis = family_in.axis;
-    strided.pitch_mm = family_in.pitch_mm * stride;
-    const long base = std::lround(family_in.first_level / family_in.pitch_mm);
-    bool first = true;
-    for (std::size_t j = 0; j < family_in.size(); ++j) {
-      const long k = base + static_cast<long>(j);
-      if (((k % stride) + stride) % stride != 0) continue;
-      if (first) strided.first_level = family_in.level(j);
-      first = false;
-      strided.slices.push_back(family_in.slices[j]);
-    }
-  }
-  const SliceFamily& family = stride > 1 ? strided : family_in;
+SliceEnvelope SliceEnvelope::build(const SliceFamily& family, double bin_mm, int stride) {
   SliceEnvelope e;
   e.axis_ = family.axis;
   e.first_ = family.first_level;
   e.pitch_ = family.pitch_mm;
-  e.n_ = family.size();
+  // The slices read, by reference (a strided envelope for roughing used to copy them).
+  std::vector<const PolygonSet*> slices;
+  if (stride > 1) {
+    // Keep the slices on the coarser lattice (level index divisible by stride), so coarse
+    // and fine envelopes of one model share their slices.
+    e.pitch_ = family.pitch_mm * stride;
+    e.first_ = SliceFamily{}.first_level;
+    const long base = std::lround(family.first_level / family.pitch_mm);
+    for (std::size_t j = 0; j < family.size(); ++j) {
+      const long k = base + static_cast<long>(j);
+      if (((k % stride) + stride) % stride != 0) continue;
+      if (slices.empty()) e.first_ = family.level(j);
+      slices.push_back(&family.slices[j]);
+    }
+  } else {
+    for (const PolygonSet& set : family.slices)
+      slices.push_back(&set);
+  }
+  e.n_ = slices.size();
   e.bin_ = bin_mm > 0.0 ? bin_mm : 1.0;
   // Upward-facing edges of every slice, as (s, z) segments. Rings are normalized (outers
   // counter-clockwise, holes clockwise in the plane's (u, v)), so the outward normal of an
   // edge (du, dv) is (dv, -du) and its z component says whether the edge faces up. An edge
   // facing down can never be the first contact of a disc coming from above (the disc would
-  // have to cross the solid to reach it).
-  std::vector<std::vector<Seg>> per(e.n_);
-  double smin = kInf, smax = -kInf;
-  for (std::size_t j = 0; j < e.n_; ++j) {
-    for (const Ring& ring : family.slices[j].rings) {
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
-        const double du = b.x - a.x, dv = b.y - a.y;
-        double nz = 0.0;
-        Seg s{};
-        if (family.axis == Axis::kX) {  // (u, v) = (y, z)
-          nz = -du;
-          s = {a.x, a.y, b.x, b.y, 0.0, 0.0};
-        } else {  // kY: (u, v) = (z, x)
-          nz = dv;
-          s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
+  // have to cross the solid to reach it). The edges are walked three times (extent, count,
+  // fill) rather than gathered in a temporary array: that array (or one per slice) cost more
+  // in fresh pages than the walks cost.
+  auto up_edges = [&](auto&& fn) {  // fn(slice, segment with s0 <= s1, normal not set)
+    for (std::size_t j = 0; j < e.n_; ++j) {
+      for (const Ring& ring : slices[j]->rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+          const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+          const double du = b.x - a.x, dv = b.y - a.y;
+          double nz = 0.0;
+          Seg s{};
+          if (family.axis == Axis::kX) {  // (u, v) = (y, z)
+            nz = -du;
+            s = {a.x, a.y, b.x, b.y, 0.0, 0.0};
+          } else {  // kY: (u, v) = (z, x)
+            nz = dv;
+            s = {a.y, a.x, b.y, b.x, 0.0, 0.0};
+          }
+          // nz < -1e-12 |(du, dv)|, squared: hypot is slow and this runs for every edge.
+          if (nz < 0.0 && nz * nz > 1e-24 * (du * du + dv * dv)) continue;
+          if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
+          fn(j, s);
         }
-        // nz < -1e-12 |(du, dv)|, squared: hypot is slow and this runs for every edge.
-        if (nz < 0.0 && nz * nz > 1e-24 * (du * du + dv * dv)) continue;
-        if (s.s0 > s.s1) s = {s.s1, s.z1, s.s0, s.z0, 0, 0};
-        // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
-        const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
-        if (ds_ > 1e-12 && len > 0.0) {
-          s.ns = -dz_ / len;
-          s.nz = ds_ / len;
-        }  // else vertical (nz stays 0): only its end points can be touched
-        smin = std::min(smin, s.s0);
-        smax = std::max(smax, s.s1);
-        per[j].push_back(s);
       }
     }
-  }
+  };
+  double smin = kInf, smax = -kInf;
+  e.nseg_ = 0;
+  up_edges([&](std::size_t, const Seg& s) {
+    smin = std::min(smin, s.s0);
+    smax = std::max(smax, s.s1);
+    ++e.nseg_;
+  });
   if (smin > smax) {
     smin = 0.0;
     smax = 0.0;
@@ -85,9 +87,10 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   e.smin_ = smin;
   e.nb_ = static_cast<int>(std::floor((smax - smin) / e.bin_)) + 1;
   const std::size_t nb = static_cast<std::size_t>(e.nb_);
-  e.nseg_ = 0;
-  for (const auto& v : per)
-    e.nseg_ += v.size();
+  // Cells are stored bin-major (cell of slice j, bin b = b * n + j): a query walks one bin
+  // over consecutive slices, and the secondary family's scan lines slide along the slices
+  // of fixed bins, so their cells, upper lines and segments lie in one run of memory.
+  const auto cell_of = [n = e.n_](std::size_t j, std::size_t b) { return b * n + j; };
   e.start_.assign(e.n_ * nb + 1, 0);
   std::vector<double> binmax(e.n_ * nb, -kInf);
   auto bin_of = [&](double s) {
@@ -95,33 +98,36 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   };
   // Count, then fill (CSR). A segment is copied into every bin it spans, so a query reads
   // the segments of a bin, and of consecutive bins of a slice, from one run of memory.
-  for (std::size_t j = 0; j < e.n_; ++j)
-    for (const Seg& s : per[j])
-      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b)
-        ++e.start_[j * nb + static_cast<std::size_t>(b) + 1];
+  up_edges([&](std::size_t j, const Seg& s) {
+    for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b)
+      ++e.start_[cell_of(j, static_cast<std::size_t>(b)) + 1];
+  });
   for (std::size_t c = 0; c < e.n_ * nb; ++c)
     e.start_[c + 1] += e.start_[c];
   e.seg_.resize(e.start_.back());
   e.slice_of_.resize(e.start_.back());
   std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
-  for (std::size_t j = 0; j < e.n_; ++j) {
-    for (const Seg& s : per[j]) {
-      for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b) {
-        const std::size_t c = j * nb + static_cast<std::size_t>(b);
-        e.seg_[fill[c]] = s;
-        e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
-        binmax[c] = std::max({binmax[c], s.z0, s.z1});
-      }
+  up_edges([&](std::size_t j, Seg s) {
+    // Upward unit normal (ns, nz) = (-dz, ds) / len, and the slope for the interior test.
+    const double ds_ = s.s1 - s.s0, dz_ = s.z1 - s.z0, len = std::hypot(ds_, dz_);
+    if (ds_ > 1e-12 && len > 0.0) {
+      s.ns = -dz_ / len;
+      s.nz = ds_ / len;
+    }  // else vertical (nz stays 0): only its end points can be touched
+    for (int b = bin_of(s.s0), b1 = bin_of(s.s1); b <= b1; ++b) {
+      const std::size_t c = cell_of(j, static_cast<std::size_t>(b));
+      e.seg_[fill[c]] = s;
+      e.slice_of_[fill[c]++] = static_cast<std::uint32_t>(j);
+      binmax[c] = std::max({binmax[c], s.z0, s.z1});
     }
-    std::vector<Seg>().swap(per[j]);
-  }
+  });
   // Upper lines per (slice, bin): the slope of the highest edges across the bin, raised until
   // every edge end inside the bin (clipped to it) lies under the line. Edges are straight, so
   // their ends bound them.
   e.line_.assign(e.n_ * nb, Line{-kInf, 0.0, 0.0, -kInf});
   for (std::size_t c = 0; c < e.n_ * nb; ++c) {
     if (e.start_[c] == e.start_[c + 1]) continue;
-    const double lo = e.smin_ + e.bin_ * static_cast<double>(c % nb), hi = lo + e.bin_;
+    const double lo = e.smin_ + e.bin_ * static_cast<double>(c / e.n_), hi = lo + e.bin_;
     const double mid = lo + 0.5 * e.bin_;
     double zl = -kInf, zh = -kInf;
     auto clip = [&](const Seg& g, double at) { return g.z0 - (at - g.s0) * g.ns / g.nz; };
@@ -151,7 +157,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
   e.supermax_.assign(nsuper * nbc, -kInf);
   for (std::size_t j = 0; j < e.n_; ++j)
     for (std::size_t b = 0; b < nb; ++b) {
-      const double v = binmax[j * nb + b];
+      const double v = binmax[cell_of(j, b)];
       double& m = blockmax[(j / kBlock) * nbc + b / kCoarse];
       m = std::max(m, v);
       double& sm = e.supermax_[(j / kBlock / kBlock) * nbc + b / kCoarse];
@@ -165,7 +171,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       double zl = -kInf, zh = -kInf;
       const std::size_t j1 = std::min(e.n_, (blk + 1) * kBlock);
       for (std::size_t j = blk * kBlock; j < j1; ++j) {
-        const Line& L = e.line_[j * nb + b];
+        const Line& L = e.line_[cell_of(j, b)];
         zl = std::max(zl, L.a - 0.5 * e.bin_ * L.b);
         zh = std::max(zh, L.a + 0.5 * e.bin_ * L.b);
       }
@@ -174,7 +180,7 @@ SliceEnvelope SliceEnvelope::build(const SliceFamily& family_in, double bin_mm, 
       const double slope = (zh - zl) / e.bin_;
       double a = -kInf;
       for (std::size_t j = blk * kBlock; j < j1; ++j) {
-        const Line& L = e.line_[j * nb + b];
+        const Line& L = e.line_[cell_of(j, b)];
         if (L.a > -kInf) a = std::max(a, L.a + std::fabs(L.b - slope) * 0.5 * e.bin_);
       }
       e.blockline_[blk * nb + b] = {a, slope, slope / std::sqrt(1.0 + slope * slope),
@@ -333,7 +339,7 @@ double SliceEnvelope::centre_height(Vec2 p, double r, double best, std::uint32_t
       for (long j = j0; j <= j1; ++j) {
         const double rho2 = rho2s[j - j0];
         const std::size_t cell =
-            static_cast<std::size_t>(j) * nb + static_cast<std::size_t>(qb0 + m);
+            static_cast<std::size_t>(qb0 + m) * n_ + static_cast<std::size_t>(j);
         // The bin's box (as can_beat), then its upper line (as line_can_beat).
         const double room = rho2 - a.dx2;
         if (room < 0.0) continue;  // also rho2 < 0: the slice is out of reach
@@ -405,61 +411,59 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
   LevelEnvelope e;
   e.cell_ = cell_mm > 0.0 ? cell_mm : 1.0;
   const long base = fam.pitch_mm > 0.0 ? std::lround(fam.first_level / fam.pitch_mm) : 0;
-  // Ring edges as end points first (the cells they cross), stored as start and direction.
-  struct Raw {
-    double x0, y0, x1, y1, z;
-  };
-  std::vector<Raw> raw;
-  Box2 box;
+  // The levels read (every stride-th on the coarser lattice), in ascending order.
+  std::vector<std::size_t> kept;
   for (std::size_t j = 0; j < fam.size(); ++j) {
     const long k = base + static_cast<long>(j);
     if (stride > 1 && ((k % stride) + stride) % stride != 0) continue;
-    const double z = fam.level(j);
-    for (const Ring& ring : fam.slices[j].rings)
-      for (std::size_t q = 0; q < ring.size(); ++q) {
-        const Vec2 a = ring[q], b = ring[(q + 1) % ring.size()];
-        raw.push_back({a.x, a.y, b.x, b.y, z});
-        box.add(a);
-      }
+    kept.push_back(j);
   }
-  if (raw.empty()) return e;
+  // Ring edges (start a, end b) of the kept levels, highest level first, each ring in its
+  // order: fn(a, b, z). Walked three times (extent, count, fill) instead of gathered in a
+  // temporary list and sorted per cell: levels rise strictly with the index, so this order
+  // is the order by level (descending) and then by position in the model that the sort gave.
+  auto edges = [&](auto&& fn) {
+    for (std::size_t m = kept.size(); m-- > 0;) {
+      const std::size_t j = kept[m];
+      const double z = fam.level(j);
+      for (const Ring& ring : fam.slices[j].rings)
+        for (std::size_t q = 0; q < ring.size(); ++q)
+          fn(ring[q], ring[(q + 1) % ring.size()], z);
+    }
+  };
+  Box2 box;
+  e.nseg_ = 0;
+  edges([&](Vec2 a, Vec2, double) {
+    box.add(a);
+    ++e.nseg_;
+  });
+  if (e.nseg_ == 0) return e;
   e.origin_ = box.min;
   e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
   e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
   const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
-  auto cells = [&](const Raw& g, auto&& fn) {
-    const int i0 = static_cast<int>(std::floor((std::min(g.x0, g.x1) - e.origin_.x) / e.cell_));
-    const int i1 = static_cast<int>(std::floor((std::max(g.x0, g.x1) - e.origin_.x) / e.cell_));
-    const int j0 = static_cast<int>(std::floor((std::min(g.y0, g.y1) - e.origin_.y) / e.cell_));
-    const int j1 = static_cast<int>(std::floor((std::max(g.y0, g.y1) - e.origin_.y) / e.cell_));
+  auto cells = [&](Vec2 a, Vec2 b, auto&& fn) {
+    const int i0 = static_cast<int>(std::floor((std::min(a.x, b.x) - e.origin_.x) / e.cell_));
+    const int i1 = static_cast<int>(std::floor((std::max(a.x, b.x) - e.origin_.x) / e.cell_));
+    const int j0 = static_cast<int>(std::floor((std::min(a.y, b.y) - e.origin_.y) / e.cell_));
+    const int j1 = static_cast<int>(std::floor((std::max(a.y, b.y) - e.origin_.y) / e.cell_));
     for (int j = std::max(0, j0); j <= std::min(e.ny_ - 1, j1); ++j)
       for (int i = std::max(0, i0); i <= std::min(e.nx_ - 1, i1); ++i)
         fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
            static_cast<std::size_t>(i));
   };
   e.start_.assign(ncell + 1, 0);
-  for (const Raw& g : raw)
-    cells(g, [&](std::size_t c) { ++e.start_[c + 1]; });
+  edges([&](Vec2 a, Vec2 b, double) { cells(a, b, [&](std::size_t c) { ++e.start_[c + 1]; }); });
   for (std::size_t c = 0; c < ncell; ++c)
     e.start_[c + 1] += e.start_[c];
-  std::vector<std::uint32_t> items(e.start_.back());
-  std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
-  for (std::size_t k = 0; k < raw.size(); ++k)
-    cells(raw[k], [&](std::size_t c) { items[fill[c]++] = static_cast<std::uint32_t>(k); });
-  // Highest level first in every cell (ties by index: deterministic).
-  for (std::size_t c = 0; c < ncell; ++c)
-    std::sort(items.begin() + e.start_[c], items.begin() + e.start_[c + 1],
-              [&](std::uint32_t a, std::uint32_t b) {
-                return raw[a].z != raw[b].z ? raw[a].z > raw[b].z : a < b;
-              });
-  // The segments themselves in that order, so a query reads a cell from one run of memory.
+  // The segments in that order per cell, so a query reads a cell from one run of memory.
   // Direction stored as end - start: the same doubles the queries computed per edge before.
-  e.seg_.resize(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) {
-    const Raw& g = raw[items[k]];
-    e.seg_[k] = {g.x0, g.y0, g.x1 - g.x0, g.y1 - g.y0, g.z};
-  }
-  e.nseg_ = raw.size();
+  e.seg_.resize(e.start_.back());
+  std::vector<std::uint32_t> fill(e.start_.begin(), e.start_.end() - 1);
+  edges([&](Vec2 a, Vec2 b, double z) {
+    const Seg g{a.x, a.y, b.x - a.x, b.y - a.y, z};
+    cells(a, b, [&](std::size_t c) { e.seg_[fill[c]++] = g; });
+  });
   // The highest level of each cell in a small array of its own: most cells a query walks
   // are ruled out by it without touching their segments.
   e.cellmax_.assign(ncell, -kInf);
