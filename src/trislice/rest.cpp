@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "swarf/core/parallel.h"
@@ -24,20 +25,27 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
   RestRegions out;
   out.pitch_mm = model.pitch_mm;
   out.bounds = model.bounds;
-  for (int a = 0; a < 3; ++a) {
+  // The xy family first: a point is residue only where all the families analysed agree
+  // (thickness_map), so the x and y families are needed only over the xy family's residue
+  // (its bounds plus a pitch, for the map's nearest-slice reading); elsewhere their answer
+  // cannot change the map or the points. On the torus part this skips over half of their
+  // slices, the same map.
+  Box3 limit = o.region;
+  bool nothing_left = false;
+  for (int a : {2, 0, 1}) {
     const SliceFamily& fam = model.families[static_cast<std::size_t>(a)];
     SliceFamily& res = out.families[static_cast<std::size_t>(a)];
     res.axis = fam.axis;
     res.pitch_mm = fam.pitch_mm;
     res.first_level = fam.first_level;
-    if (!o.families[static_cast<std::size_t>(a)] || fam.size() == 0) continue;
+    if (!o.families[static_cast<std::size_t>(a)] || fam.size() == 0 || nothing_left) continue;
     // Analysed slices [j0, j1]; the inflation is needed within r of them.
     long j0 = 0, j1 = static_cast<long>(fam.size()) - 1;
-    if (!o.region.empty()) {
-      j0 = std::max(j0, static_cast<long>(
-                            std::ceil((o.region.min[a] - fam.first_level) / fam.pitch_mm - 1e-9)));
+    if (!limit.empty()) {
+      j0 = std::max(
+          j0, static_cast<long>(std::ceil((limit.min[a] - fam.first_level) / fam.pitch_mm - 1e-9)));
       j1 = std::min(j1, static_cast<long>(
-                            std::floor((o.region.max[a] - fam.first_level) / fam.pitch_mm + 1e-9)));
+                            std::floor((limit.max[a] - fam.first_level) / fam.pitch_mm + 1e-9)));
     }
     if (j0 > j1) continue;
     const long nr = static_cast<long>(std::ceil(o.tool_radius_mm / fam.pitch_mm - 1e-9));
@@ -82,7 +90,26 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
       res.slices[k] = std::move(residue);
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
-    ctx.report("unmachinable regions", (a + 1) / 3.0);
+    ctx.report("unmachinable regions", a == 2 ? 1.0 / 3.0 : (a + 2) / 3.0);
+    if (a == 2 && o.prune_by_xy_residue) {
+      Box2 xy;
+      for (const PolygonSet& r : res.slices)
+        if (!r.empty()) xy.merge(bounds(r));
+      if (xy.empty()) {
+        nothing_left = true;  // no residue in the xy family: none anywhere
+      } else {
+        const double m = fam.pitch_mm, kInf = std::numeric_limits<double>::infinity();
+        Box3 agreed{{xy.min.x - m, xy.min.y - m, -kInf}, {xy.max.x + m, xy.max.y + m, kInf}};
+        if (!o.region.empty()) {
+          agreed.min = {std::max(agreed.min.x, o.region.min.x),
+                        std::max(agreed.min.y, o.region.min.y), o.region.min.z};
+          agreed.max = {std::min(agreed.max.x, o.region.max.x),
+                        std::min(agreed.max.y, o.region.max.y), o.region.max.z};
+        }
+        limit = agreed;
+        nothing_left = limit.empty();
+      }
+    }
   }
   return out;
 }
@@ -217,7 +244,9 @@ AgreedResidue agreed_residue(const RestRegions& rest, double cell_mm) {
     const double reach = 0.5 * std::max(f.pitch_mm, map.cell_mm) + 1e-9;
     for (int c = 0; c < n_across; ++c) {
       const double centre = (fam_y ? map.origin.y : map.origin.x) + (c + 0.5) * map.cell_mm;
-      const long j = std::lround((centre - f.first_level) / f.pitch_mm);
+      // On the model's lattice (not relative to the first analysed slice), so that a centre
+      // half-way between two slices picks the same one whatever range was analysed.
+      const long j = std::lround(centre / f.pitch_mm) - lattice_index(f, 0);
       if (j < 0 || j >= static_cast<long>(f.size())) continue;
       const auto ju = static_cast<std::size_t>(j);
       if (std::abs(f.level(ju) - centre) > reach) continue;

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "swarf/mesh/generate.h"
+#include "swarf/trislice/model.h"
 #include "swarf/trislice/rest.h"
 
 namespace swarf {
@@ -86,6 +88,43 @@ TEST(TriSliceRestMap, FamiliesMustAgreeOnTheHeights) {
     EXPECT_LE(z, 1.0 + 1e-9);
   }
   EXPECT_EQ(n, 40 * 40 * 6);
+}
+
+}  // namespace
+}  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A block on a plate: residue only along the block's foot (a ø4 ball cannot reach into the
+// concave right angle there). The x and y families analysed only over the xy family's residue
+// give the same map and points as the full analysis.
+TEST(TriSliceRestMap, PruningByTheXyResidueChangesNothing) {
+  Mesh part = make_box(Box3{{0, 0, 0}, {40, 40, 3}});
+  const Mesh b = make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}});
+  const auto base = static_cast<std::uint32_t>(part.vertices.size());
+  part.vertices.insert(part.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (auto t : b.triangles) {
+    for (auto& v : t)
+      v += base;
+    part.triangles.push_back(t);
+  }
+  auto model = build_trislice(part, 0.25);
+  ASSERT_TRUE(model.ok()) << model.status().to_string();
+  RestOptions o;
+  o.tool_radius_mm = 2.0;
+  auto pruned = unmachinable_regions(*model, o);
+  o.prune_by_xy_residue = false;
+  auto full = unmachinable_regions(*model, o);
+  ASSERT_TRUE(pruned.ok() && full.ok());
+  EXPECT_LT(pruned->families[0].size(), full->families[0].size() / 2);
+  const ThicknessMap a = thickness_map(*pruned, 0.25), c = thickness_map(*full, 0.25);
+  EXPECT_GT(a.max(), 0.5);  // the foot of the block: about r (sqrt 2 - 1) across the corner
+  EXPECT_EQ(a.mm, c.mm);
+  EXPECT_EQ(residue_points_ply(*pruned, 0.25), residue_points_ply(*full, 0.25));
+  // Nothing away from the block.
+  EXPECT_EQ(a.at({5.0, 5.0}), 0.0);
+  EXPECT_EQ(a.at({35.0, 20.0}), 0.0);
 }
 
 }  // namespace

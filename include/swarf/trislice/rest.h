@@ -28,6 +28,11 @@ struct RestOptions {
   /// empty: all. Saves time when only a feature is of interest.
   Box3 region;
   ConvolutionOptions convolution{0.005, 1};
+  /// Analyse the x and y families only over the xy family's residue (its bounds plus a
+  /// pitch): the map and the points keep only what all families agree on, so they come out
+  /// the same, sooner where the residue is local (a pocket part: half the time). false:
+  /// every slice of every family.
+  bool prune_by_xy_residue = true;
   /// Normal error the closing may make between slices, mm: neighbours are read every
   /// floor(sqrt(8 r tol) / ds) slices (offset.h bound ds'^2 / (8 r) <= tol). 0 = every slice.
   double convolution_tolerance_mm = 0.005;
