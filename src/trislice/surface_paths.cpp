@@ -692,16 +692,25 @@ PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
 
 namespace {
 
-// Heights where a mesh has a sharp feature no slice between two levels is sure to see: its
-// horizontal edges whose faces meet at more than kSharpDeg (the top of a step, a flat ridge)
-// and its sharp peaks (a vertex at least as high as the other corners of every triangle
-// round it, one of them steeper than kSharpDeg). Smooth ones (the rings of a revolved
-// surface, the top of a dome) are left to the slices: there the error is second-order, and
-// slicing them too cost 75 % more time on the torus part. Sorted, without repeats (1e-7
-// mm); kept also where a lattice level falls on one, since the slicer counts a vertex on the
-// plane as above it and that level's section has no trace of a peak there.
-std::vector<double> critical_heights(const Mesh& mesh) {
-  constexpr double kSharpDeg = 20.0;
+// What of a mesh no slice between two levels is sure to see, for waterlines:
+//  - heights of its horizontal edges whose faces meet at more than kSharpDeg (the top of a
+//    step, a flat ridge) and of its sharp peaks (a vertex at least as high as the other
+//    corners of every triangle round it, one of them steeper than kSharpDeg): sliced
+//    exactly. Smooth ones (the rings of a revolved surface, the top of a dome) are left to
+//    the slices: there the error is second-order, and slicing them too cost 75 % more time
+//    on the torus part. Sorted, without repeats (1e-7 mm); kept also where a lattice level
+//    falls on one, since the slicer counts a vertex on the plane as above it and that
+//    level's section has no trace of a peak there;
+//  - points along its sharp edges that rise so slowly that the slices cross them more than
+//    kEdgeStep apart (the top edge of a sloping side): the ball keeps its radius from each,
+//    so between two points it can come closer by at most kEdgeStep^2 / (8 rho), about 1 um.
+struct CriticalFeatures {
+  std::vector<double> heights;
+  std::vector<Vec3> edge_points;  ///< sorted by z
+};
+
+CriticalFeatures critical_features(const Mesh& mesh, double pitch_mm) {
+  constexpr double kSharpDeg = 20.0, kEdgeStep = 0.1;
   const double cos_sharp = std::cos(deg_to_rad(kSharpDeg));
   std::vector<Vec3> normal(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -715,7 +724,8 @@ std::vector<double> critical_heights(const Mesh& mesh) {
     std::uint32_t a, b;
     std::size_t tri;
   };
-  std::vector<Edge> flat;
+  std::vector<Edge> edges;
+  edges.reserve(3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     for (int k = 0; k < 3; ++k) {
@@ -723,30 +733,65 @@ std::vector<double> critical_heights(const Mesh& mesh) {
       const double za = mesh.vertices[ia].z;
       if (za < mesh.vertices[ib].z || za < mesh.vertices[ic].z) peak[ia] = 0;
       if (normal[t].z < cos_sharp) steep[ia] = 1;
-      if (za == mesh.vertices[ib].z) flat.push_back({std::min(ia, ib), std::max(ia, ib), t});
+      edges.push_back({std::min(ia, ib), std::max(ia, ib), t});
     }
   }
-  std::vector<double> h;
-  std::sort(flat.begin(), flat.end(), [](const Edge& x, const Edge& y) {
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
     return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.tri < y.tri);
   });
-  for (std::size_t i = 0; i < flat.size();) {
+  CriticalFeatures out;
+  std::vector<double> h;
+  for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
     bool sharp = false;
-    while (j < flat.size() && flat[j].a == flat[i].a && flat[j].b == flat[i].b) {
-      if (dot(normal[flat[j].tri], normal[flat[i].tri]) < cos_sharp) sharp = true;
+    while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) {
+      if (dot(normal[edges[j].tri], normal[edges[i].tri]) < cos_sharp) sharp = true;
       ++j;
     }
-    if (sharp || j - i == 1) h.push_back(mesh.vertices[flat[i].a].z);  // or an open edge
+    sharp = sharp || j - i == 1;  // or an open edge
+    const Vec3 a = mesh.vertices[edges[i].a], b = mesh.vertices[edges[i].b];
     i = j;
+    if (!sharp) continue;
+    const double dz = std::abs(b.z - a.z), len = norm(b - a);
+    if (dz == 0.0) {
+      h.push_back(a.z);
+    } else if (pitch_mm * len > kEdgeStep * dz) {
+      // The ends too: a corner of two such edges (a crest along a sloping side) is the
+      // highest point round it without being a peak of the mesh.
+      const int n = std::max(1, static_cast<int>(std::ceil(len / kEdgeStep)));
+      for (int k = 0; k <= n; ++k)
+        out.edge_points.push_back(a + (b - a) * (static_cast<double>(k) / n));
+    }
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
     if (peak[v] != 0 && steep[v] != 0) h.push_back(mesh.vertices[v].z);
   std::sort(h.begin(), h.end());
-  std::vector<double> out;
   for (double z : h)
-    if (out.empty() || z - out.back() >= 1e-7) out.push_back(z);
+    if (out.heights.empty() || z - out.heights.back() >= 1e-7) out.heights.push_back(z);
+  std::sort(out.edge_points.begin(), out.edge_points.end(), [](const Vec3& p, const Vec3& q) {
+    return p.z != q.z ? p.z < q.z : (p.x != q.x ? p.x < q.x : p.y < q.y);
+  });
+  out.edge_points.erase(std::unique(out.edge_points.begin(), out.edge_points.end(),
+                                    [](const Vec3& p, const Vec3& q) {
+                                      return p.x == q.x && p.y == q.y && p.z == q.z;
+                                    }),
+                        out.edge_points.end());
   return out;
+}
+
+// Disc of radius `radius` round c, as a polygon whose edges stay outside the circle (the
+// region it joins is where the tool may not go), within `tol` of it.
+Ring outer_disc(Vec2 c, double radius, double tol) {
+  const double t = std::clamp(tol / std::max(radius, 1e-9), 1e-9, 1.0);
+  const int n = std::max(8, static_cast<int>(std::ceil(kPi / std::acos(1.0 - t))));
+  const double rr = radius / std::cos(kPi / n);
+  Ring ring;
+  ring.reserve(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * kPi * k / n;
+    ring.push_back({c.x + rr * std::cos(a), c.y + rr * std::sin(a)});
+  }
+  return ring;
 }
 
 }  // namespace
@@ -771,20 +816,36 @@ Result<Toolpath> contour_paths(const TriSliceModel& model, const Tool& tool, con
   // than that, the section round a peak is smaller than the polygon resolution and vanishes.
   std::vector<double> crit;
   std::vector<PolygonSet> crit_sections;
+  CriticalFeatures features;
   if (p.critical_mesh != nullptr) {
-    crit = critical_heights(*p.critical_mesh);
-    std::vector<double> below(crit.size());
+    features = critical_features(*p.critical_mesh, xy.pitch_mm);
+    crit.resize(features.heights.size());
     for (std::size_t k = 0; k < crit.size(); ++k)
-      below[k] = crit[k] - 1e-4;
-    crit_sections = slice_mesh(*p.critical_mesh, Axis::kZ, below, {}, ctx);
-    crit = below;
+      crit[k] = features.heights[k] - 1e-4;
+    crit_sections = slice_mesh(*p.critical_mesh, Axis::kZ, crit, {}, ctx);
   }
   std::vector<std::vector<Ring>> rings(levels.size());
   parallel_for(levels.size(), ctx.threads, [&](std::size_t i) {
     if (ctx.cancelled()) return;
     // The tool centre is at tip + r; with stock to leave it keeps r + stock from the part.
-    const PolygonSet region =
+    PolygonSet region =
         waterline_region(xy, levels[i] + tool.radius() - R, R, co, crit_sections, crit);
+    // Points along slowly rising sharp edges: below the centre the ball's section there,
+    // above it the shank (within a pitch: higher ones are inside the slices above).
+    const double zc = levels[i] + tool.radius();
+    const auto lo = std::lower_bound(features.edge_points.begin(), features.edge_points.end(),
+                                     zc - R, [](const Vec3& q, double z) { return q.z < z; });
+    PolygonSet discs;
+    for (auto it = lo; it != features.edge_points.end() && it->z <= zc + xy.pitch_mm; ++it) {
+      const double dz = std::max(0.0, zc - it->z);
+      if (dz >= R) continue;
+      discs.rings.push_back(outer_disc(it->xy(), std::sqrt(R * R - dz * dz), p.arc_tolerance_mm));
+    }
+    if (!discs.empty()) {
+      const PolygonSet both[2] = {region, discs};
+      region = unite(std::span<const PolygonSet>(both, 2));
+    }
+
     OffsetOptions oo;
     oo.arc_tolerance_mm = p.arc_tolerance_mm;
     for (int k = p.radial_passes - 1; k >= 0; --k) {
