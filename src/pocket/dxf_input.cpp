@@ -487,9 +487,10 @@ Result<Pocket> parse_pocket_dxf(std::string_view text, std::string_view source,
     loops.push_back(std::move(loop));
   }
   if (unit_mm != 1.0) {
-    for (Ring& loop : loops)
+    for (Ring& loop : loops) {
       for (Vec2& q : loop)
         q = q * unit_mm;
+    }
   }
   return pocket::pocket_from_loops(std::move(loops), source);
 }

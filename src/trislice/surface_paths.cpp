@@ -677,10 +677,11 @@ PolygonSet waterline_region(const SliceFamily& xy, double tip_z, double r_mm,
     if (section.empty()) return;
     const double dz = zc - level;
     if (dz > r_mm) return;
-    if (dz > 0.0)
+    if (dz > 0.0) {
       parts.push_back(offset(section, std::sqrt(r_mm * r_mm - dz * dz), oo));
-    else
+    } else {
       above.push_back(section);
+    }
   };
   for (std::size_t j = 0; j < xy.size(); ++j)
     add(xy.slices[j], xy.level(j));

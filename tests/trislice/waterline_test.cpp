@@ -117,9 +117,10 @@ TEST(TriSliceWaterline, SlowlyRisingSharpRidgeKeepsTheBallOut) {
     for (const Move& m : tp->moves) {
       if (m.kind != MoveKind::kFeed) continue;
       const Vec3 c = m.end + Vec3{0, 0, r};
-      for (std::size_t t = 0; t < roof.triangles.size(); ++t)
+      for (std::size_t t = 0; t < roof.triangles.size(); ++t) {
         lo = std::min(lo, norm(c - closest_on_triangle(c, roof.corner(t, 0), roof.corner(t, 1),
                                                        roof.corner(t, 2))));
+      }
     }
     return lo;
   };
