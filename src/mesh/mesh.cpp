@@ -110,6 +110,14 @@ MeshCheck check_mesh(const Mesh& mesh) {
   return c;
 }
 
+void append(Mesh& to, const Mesh& more) {
+  const auto base = static_cast<std::uint32_t>(to.vertices.size());
+  to.vertices.insert(to.vertices.end(), more.vertices.begin(), more.vertices.end());
+  to.triangles.reserve(to.triangles.size() + more.triangles.size());
+  for (const auto& t : more.triangles)
+    to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
 Mesh transformed(const Mesh& mesh, double rotate_z_deg, Vec3 translation) {
   Mesh out = mesh;
   // Exact quarter turns keep exact coordinates (cos 90 deg is not exactly 0 in floating point).

@@ -97,6 +97,20 @@ TEST(Mesh, TransformedRotatesAboutZThenTranslates) {
   EXPECT_NEAR(r.vertices[1].x, 3 * std::cos(deg_to_rad(30)), 1e-12);
 }
 
+// Two closed shells appended stay two closed shells: edges, orientation and volume add up.
+TEST(Mesh, AppendKeepsBothShellsIntact) {
+  Mesh m = make_box({{0, 0, 0}, {2, 3, 4}});
+  const Mesh b = make_box({{10, 0, 0}, {11, 1, 1}});
+  append(m, b);
+  EXPECT_EQ(m.vertices.size(), 16u);
+  EXPECT_EQ(m.triangles.size(), 24u);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.closed());
+  EXPECT_EQ(c.inconsistent_edges, 0u);
+  EXPECT_NEAR(c.volume_mm3, 24.0 + 1.0, 1e-12);
+  EXPECT_EQ(bounds(m).max.x, 11.0);
+}
+
 TEST(Generate, BoxIsExact) {
   const Mesh m = make_box({{-1, -2, -3}, {4, 5, 6}});
   expect_clean_solid(m);

@@ -140,16 +140,8 @@ TEST(TriSliceCli, RestWritesMapAndPointsAndRejectsFlatTools) {
   TempDir dir;
   // Two boxes side by side with a 2 mm slot: a ø8 ball leaves the slot's material behind.
   Mesh m = make_box({{0, 0, 0}, {10, 10, 5}});
-  const Mesh n = make_box({{12, 0, 0}, {22, 10, 5}});
-  const auto base = static_cast<std::uint32_t>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), n.vertices.begin(), n.vertices.end());
-  for (auto t : n.triangles)
-    m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  const Mesh floor = make_box({{0, 0, -3}, {22, 10, 0}});
-  const auto base2 = static_cast<std::uint32_t>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), floor.vertices.begin(), floor.vertices.end());
-  for (auto t : floor.triangles)
-    m.triangles.push_back({t[0] + base2, t[1] + base2, t[2] + base2});
+  append(m, make_box({{12, 0, 0}, {22, 10, 5}}));
+  append(m, make_box({{0, 0, -3}, {22, 10, 0}}));
   ASSERT_TRUE(write_stl(dir.file("slot.stl"), m).ok());
   const auto r = run_swarf("rest " + dir.file("slot.stl") + " --tool ball:8 --pitch 0.5 --report " +
                            dir.file("rep") + " --csv " + dir.file("rest.csv"));

@@ -101,14 +101,7 @@ namespace {
 // give the same map and points as the full analysis.
 TEST(TriSliceRestMap, PruningByTheXyResidueChangesNothing) {
   Mesh part = make_box(Box3{{0, 0, 0}, {40, 40, 3}});
-  const Mesh b = make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}});
-  const auto base = static_cast<std::uint32_t>(part.vertices.size());
-  part.vertices.insert(part.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (auto t : b.triangles) {
-    for (auto& v : t)
-      v += base;
-    part.triangles.push_back(t);
-  }
+  append(part, make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}}));
   auto model = build_trislice(part, 0.25);
   ASSERT_TRUE(model.ok()) << model.status().to_string();
   RestOptions o;

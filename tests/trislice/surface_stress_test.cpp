@@ -15,17 +15,10 @@
 namespace swarf {
 namespace {
 
-void add(Mesh& m, const Mesh& more) {
-  const auto base = static_cast<std::uint32_t>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), more.vertices.begin(), more.vertices.end());
-  for (const auto& t : more.triangles)
-    m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
-
 Mesh plate_with_pin(double pin_x, double pin_y) {
   Mesh m = make_box({{0, 0, 0}, {20, 20, 2}});
   // A thin tall pin standing in the plate (the shells overlap; the slices unite them).
-  add(m, make_cylinder({pin_x, pin_y, 1.0}, 0.1, 7.0, 16));
+  append(m, make_cylinder({pin_x, pin_y, 1.0}, 0.1, 7.0, 16));
   return m;
 }
 
@@ -100,8 +93,8 @@ TEST(TriSliceStress, AdaptiveScanDoesNotMissANarrowBumpNearTheBallRim) {
 // bound of offset.h here, and never above the exact drop.
 TEST(TriSliceStress, VertexContactsRemoveTheFirstOrderErrorAtCorners) {
   Mesh part = make_box({{0, 0, 0}, {30, 30, 3}});
-  add(part, make_box({{7.33, 8.21, 1}, {17.77, 19.69, 9.13}}));
-  add(part, transformed(make_cylinder({0, 0, 1}, 3.3, 5.77, 7), 17.0, {21.17, 20.03, 0}));
+  append(part, make_box({{7.33, 8.21, 1}, {17.77, 19.69, 9.13}}));
+  append(part, transformed(make_cylinder({0, 0, 1}, 3.3, 5.77, 7), 17.0, {21.17, 20.03, 0}));
   const double r = 4.0, pitch = 0.05;
   auto model = build_trislice(part, pitch);
   ASSERT_TRUE(model.ok());

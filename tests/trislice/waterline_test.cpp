@@ -27,14 +27,7 @@ double box_distance(const Box3& b, Vec3 p) {
 TEST(TriSliceWaterline, StepTopBetweenTwoSliceLevelsIsExact) {
   const Box3 plate{{0, 0, 0}, {30, 30, 3}}, block{{7.33, 8.21, 0}, {17.77, 19.69, 9.13}};
   Mesh part = make_box(plate);
-  const Mesh b = make_box(block);
-  const auto base = static_cast<std::uint32_t>(part.vertices.size());
-  part.vertices.insert(part.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (auto t : b.triangles) {
-    for (auto& v : t)
-      v += base;
-    part.triangles.push_back(t);
-  }
+  append(part, make_box(block));
   auto model = build_trislice(part, 0.25);
   ASSERT_TRUE(model.ok()) << model.status().to_string();
   const Tool ball = parse_tool_spec("ball:3").value();

@@ -37,6 +37,10 @@ struct MeshCheck {
 };
 MeshCheck check_mesh(const Mesh& mesh);
 
+/// Adds `more`'s vertices and triangles to `to`, as a separate shell (nothing is welded:
+/// overlapping solids stay overlapping; slicing unites them).
+void append(Mesh& to, const Mesh& more);
+
 /// Applies p' = R_z(angle) p + translation to every vertex.
 Mesh transformed(const Mesh& mesh, double rotate_z_deg, Vec3 translation = {});
 
