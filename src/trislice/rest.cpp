@@ -28,8 +28,9 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
   // The xy family first: a point is residue only where all the families analysed agree
   // (thickness_map), so the x and y families are needed only over the xy family's residue
   // (its bounds plus a pitch, for the map's nearest-slice reading); elsewhere their answer
-  // cannot change the map or the points. On the torus part this skips over half of their
-  // slices, the same map.
+  // cannot change the map or the points. The Kiri:Moto pocket part takes half the time; on
+  // the torus part the xy family's own film along the outer fillet spans the part, so
+  // nothing is skipped there.
   Box3 limit = o.region;
   bool nothing_left = false;
   for (int a : {2, 0, 1}) {
