@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "swarf/mesh/generate.h"
+#include "swarf/mesh/mesh.h"
 #include "swarf/trislice/envelope.h"
 #include "swarf/trislice/model.h"
 #include "swarf/trislice/offset.h"
@@ -241,6 +242,69 @@ TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
       ++n;
     }
   EXPECT_GT(n, 3000u);
+}
+
+// An octagonal frustum (drafted walls: long diagonal ring edges, different on every level)
+// beside an octagonal prism (vertical walls: the same ring edges on every level).
+Mesh drafted_and_vertical_walls() {
+  Mesh m;
+  const int n = 8;
+  auto ring = [&](double r, double z) {
+    const std::size_t first = m.vertices.size();
+    for (int k = 0; k < n; ++k) {
+      const double a = 2.0 * M_PI * (k + 0.5) / n;
+      m.vertices.push_back({r * std::cos(a) - 20.0, r * std::sin(a), z});
+    }
+    return static_cast<std::uint32_t>(first);
+  };
+  const std::uint32_t lo = ring(30.0, 0.0), hi = ring(24.0, 8.0);
+  const auto c0 = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.push_back({-20.0, 0.0, 0.0});
+  const auto c1 = static_cast<std::uint32_t>(m.vertices.size());
+  m.vertices.push_back({-20.0, 0.0, 8.0});
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t k1 = (k + 1) % n;
+    m.triangles.push_back({lo + k, lo + k1, hi + k1});
+    m.triangles.push_back({lo + k, hi + k1, hi + k});
+    m.triangles.push_back({c0, lo + k1, lo + k});
+    m.triangles.push_back({c1, hi + k, hi + k1});
+  }
+  append(m, make_cylinder({40.0, 0.0, 0.0}, 12.0, 6.0, 8));
+  return m;
+}
+
+// The level index lists each edge in the cells it crosses (not its bounding box) and leaves
+// out edges repeated from the level above; neither may change an answer. Against every ring
+// edge of every level, near both kinds of wall.
+TEST(ConvolutionalOffset, LevelEnvelopeOnDraftedAndVerticalWallsEqualsBruteForce) {
+  auto model = build_trislice_families(drafted_and_vertical_walls(), 0.1, {false, false, true});
+  ASSERT_TRUE(model.ok());
+  const SliceFamily& fam = model->family(Axis::kZ);
+  const LevelEnvelope env = LevelEnvelope::build(fam);
+  std::size_t ring_edges = 0;
+  for (const PolygonSet& set : fam.slices)
+    for (const Ring& ring : set.rings)
+      ring_edges += ring.size();
+  // The prism's 8 edges appear once instead of on each of its ~60 levels.
+  EXPECT_LT(env.segment_count() + 400, ring_edges);
+  const double r = 4.0;
+  std::size_t n = 0;
+  for (double y = -33.0; y <= 33.0; y += 2.9)
+    for (double x = -55.0; x <= 57.0; x += 0.47) {
+      double brute = -1e9;
+      for (std::size_t j = 0; j < fam.size(); ++j)
+        for (const Ring& ring : fam.slices[j].rings)
+          for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
+            const double len2 = dot(e, e);
+            const double t = len2 > 0 ? std::clamp(dot(Vec2{x, y} - a, e) / len2, 0.0, 1.0) : 0.0;
+            const double d2 = norm_sq(a + e * t - Vec2{x, y});
+            if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
+          }
+      ASSERT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
+      if (brute > 0.0) ++n;
+    }
+  EXPECT_GT(n, 1500u);
 }
 
 }  // namespace
