@@ -294,6 +294,17 @@ PolygonSet unite(const PolygonSet& a, const PolygonSet& b) {
 }
 
 PolygonSet unite(std::span<const PolygonSet> sets) {
+  // Many sets: halves united first, then the two. One union of everything is quadratic when
+  // the sets lie on top of each other (the offsets of neighbouring slices in Eq. (1), nearly
+  // coincident): every scanbeam then holds every set's edges, all crossing each other
+  // (Clipper's intersection list took 96 % of the torus part's waterlines, 11.6 s at 0.05 mm).
+  // Halving keeps each union to two overlapping inputs; on disjoint sets it costs about the
+  // same as one pass.
+  constexpr std::size_t kOnePass = 4;
+  if (sets.size() > kOnePass) {
+    const std::size_t half = sets.size() / 2;
+    return unite(unite(sets.first(half)), unite(sets.subspan(half)));
+  }
   // All rings as subjects of one union: normalized inputs wind +1 inside and 0 outside, so
   // under the non-zero rule the union is exactly where any set winds non-zero.
   cl::Paths all;

@@ -34,7 +34,8 @@ enum class FillRule { kEvenOdd, kNonZero, kPositive };
 PolygonSet normalized(const PolygonSet& set, FillRule rule = FillRule::kNonZero);
 
 PolygonSet unite(const PolygonSet& a, const PolygonSet& b);
-/// Union of many sets in one pass (much faster than folding unite()).
+/// Union of many sets (halves first, then the two: much faster than folding unite(), and than
+/// one pass when the sets overlap).
 PolygonSet unite(std::span<const PolygonSet> sets);
 PolygonSet subtract(const PolygonSet& a, const PolygonSet& b);
 PolygonSet intersect(const PolygonSet& a, const PolygonSet& b);
