@@ -112,6 +112,36 @@ TEST(DropCutter, IndexAgreesWithBruteForceOnRandomTriangles) {
   }
 }
 
+// The index lists a triangle in every cell its box overlaps and tests it in one of them (the
+// one nearest the tool axis): with cells far smaller than the triangles (each spans dozens),
+// at points on the cell lines and off them, the answer is still brute force's.
+TEST(DropCutter, SmallCellsAndPointsOnCellLinesAgreeWithBruteForce) {
+  const Mesh soup = random_soup(150, 5);
+  for (const CutterShape& shape : kShapes) {
+    DropCutterOptions o;
+    o.cell_size_mm = 0.25;
+    auto dc = DropCutter::build(soup, shape, o);
+    ASSERT_TRUE(dc.ok()) << dc.status().to_string();
+    EXPECT_GT(dc->index_entries(), 20 * soup.size());
+    const double c = dc->cell_size_mm();
+    std::size_t hits = 0;
+    for (int i = 0; i < 60; ++i)
+      for (int j = 0; j < 60; ++j) {
+        // Every third point on a cell corner, the others inside cells.
+        const double fx = (i % 3 == 0) ? 0.0 : 0.37, fy = (j % 3 == 0) ? 0.0 : 0.61;
+        const Vec2 org = dc->mesh_bounds().xy().inflated(1e-9).min;  // the grid's origin
+        const Vec2 p{org.x - 4.0 + (i * 2 + fx) * c, org.y - 4.0 + (j * 2 + fy) * c};
+        const DropResult a = dc->drop(p), b = dc->drop_brute_force(p);
+        ASSERT_EQ(a.hit(), b.hit()) << p.x << " " << p.y;
+        if (a.hit()) {
+          ASSERT_EQ(a.tip_z, b.tip_z) << p.x << " " << p.y;
+          ++hits;
+        }
+      }
+    EXPECT_GT(hits, 2000u);
+  }
+}
+
 TEST(DropCutter, ContactFormulasMatchDenseSamplingOfEachTriangle) {
   const Mesh soup = random_soup(15, 3);
   std::mt19937 rng(5);

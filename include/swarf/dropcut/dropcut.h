@@ -34,8 +34,9 @@ struct DropResult {
 };
 
 struct DropCutterOptions {
-  /// Side of the square cells of the spatial index, mm; 0 = a quarter of the tool radius,
-  /// enlarged when the index would exceed `max_index_entries`.
+  /// Side of the square cells of the spatial index, mm; 0 = a quarter of the tool radius
+  /// (at least 1/2048 of the mesh's larger side), enlarged when the index would exceed
+  /// `max_index_entries`.
   double cell_size_mm = 0.0;
   std::size_t max_index_entries = std::size_t{48} << 20;
 };
@@ -53,9 +54,10 @@ struct CutterShape {
 };
 
 /// A mesh prepared for dropping one cutter: per-triangle planes and a uniform xy grid in
-/// which every triangle is listed in each cell within the tool radius of its xy bounds, so a
-/// query reads a single cell. Lists are sorted by the triangles' highest z, and a query stops
-/// at the first triangle whose highest point cannot beat the contact found so far.
+/// which every triangle is listed in the cells its xy box overlaps, highest first, with each
+/// cell's highest z. A query walks the cells within the tool radius, skips a cell whose top,
+/// at the cell's nearest distance, cannot beat the contact found so far, and stops inside a
+/// cell at the first triangle that cannot.
 class DropCutter {
  public:
   /// Fails on an empty mesh, non-finite coordinates or an invalid cutter.
@@ -101,6 +103,7 @@ class DropCutter {
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> cell_start_;  ///< CSR: cell c holds cell_items_[start[c], start[c+1])
   std::vector<std::uint32_t> cell_items_;
+  std::vector<double> cell_zmax_;  ///< highest triangle z per cell (-infinity when empty)
 };
 
 /// A raster of CL points: lines along `direction` (kX: lines at constant y, points along x),
