@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include "swarf/core/ball_contact.h"
 #include "swarf/core/parallel.h"
 
 namespace swarf {
@@ -52,30 +53,9 @@ void consider(DropResult& best, double tip, ContactKind kind, std::size_t tri) {
   }
 }
 
-// Ball of radius r against the segment a-b: the centre rises until its distance to the line
-// is r, the larger root of a quadratic in the centre height; valid when the foot of the
-// perpendicular lies on the segment.
+// Ball of radius r against the segment a-b (interior contact; the vertices are tried apart).
 double ball_edge(Vec3 a, Vec3 b, Vec2 p, double r) {
-  const Vec3 e = b - a;
-  const double len = norm(e);
-  if (len <= 0.0) return -kInf;
-  const double ux = e.x / len, uy = e.y / len, uz = e.z / len;
-  const double a2 = ux * ux + uy * uy;  // 1 - uz^2, computed without cancellation
-  if (a2 < 1e-14) return -kInf;         // vertical edge: its end points decide
-  const double qx = p.x - a.x, qy = p.y - a.y;
-  const double A = qx * ux + qy * uy;
-  // The discriminant A^2 uz^2 - a2 (B - A^2 - r^2), B = qx^2 + qy^2, equals
-  // a2 r^2 - (qx uy - qy ux)^2 (Lagrange's identity a2 B - A^2 = cross^2). Written so, it has
-  // no difference of large squares: a ball exactly r from an edge (a grid point at a whole
-  // distance from an axis-aligned wall) gets disc = 0, not a rounding error of either sign
-  // that dropped the contact (the CL fell to the floor) or lifted it by sqrt(1e-15).
-  const double cr = qx * uy - qy * ux;
-  const double disc = a2 * r * r - cr * cr;
-  if (disc < 0.0) return -kInf;
-  const double s = (A * uz + std::sqrt(disc)) / a2;  // centre height above a.z
-  const double t = A + s * uz;                       // foot of the perpendicular along the edge
-  if (t < 0.0 || t > len) return -kInf;
-  return a.z + s - r;
+  return ball_on_segment_centre(a, b, p, r) - r;
 }
 
 // Range of t in [0, 1] for which a + t (b - a) lies within distance R of p in xy.

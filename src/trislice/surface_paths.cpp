@@ -11,6 +11,7 @@
 
 #include "swarf/core/parallel.h"
 #include "swarf/toolpath/postprocess.h"
+#include "trislice/mesh_contacts.h"
 #include "trislice/paths_internal.h"
 
 namespace swarf {
@@ -195,96 +196,6 @@ bool refine(std::size_t a, const Sample& sa, std::size_t m, const Sample& sm, st
   return true;
 }
 
-// The mesh's vertices as exact point contacts (ScanParams::vertex_mesh): a ball of radius R
-// over p rests on a vertex v within R of p at centre height v.z + sqrt(R^2 - d^2). A uniform
-// xy grid lists the vertices of each cell highest first, with each cell's highest z, so a query
-// skips a cell, or stops inside it, as soon as no vertex left there can beat the best centre
-// found so far (by the slices, or by a vertex before).
-class VertexContacts {
- public:
-  VertexContacts(const Mesh& mesh, double radius_mm) {
-    Box2 box;
-    for (const Vec3& v : mesh.vertices)
-      box.add(v.xy());
-    if (box.empty()) return;
-    // Cells of R / 8: a cell's nearest distance then bounds its vertices' reach closely. On a
-    // finely faceted smooth mesh every vertex comes within micrometres of the best contact,
-    // so only that bound prunes (65,000-triangle sphere, ø20 ball: finishing 0.9 s with R / 2,
-    // 0.53 s with R / 8 or R / 16, 0.48 s without vertices). At most 1024 cells a side.
-    cell_ = std::max({radius_mm / 8.0, box.size().x / 1024.0, box.size().y / 1024.0, 1e-3});
-    origin_ = box.min;
-    nx_ = static_cast<int>(box.size().x / cell_) + 1;
-    ny_ = static_cast<int>(box.size().y / cell_) + 1;
-    const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-    start_.assign(ncell + 1, 0);
-    std::vector<std::size_t> cell_of(mesh.vertices.size());
-    for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
-      cell_of[k] = cell_index(mesh.vertices[k].xy());
-      ++start_[cell_of[k] + 1];
-    }
-    for (std::size_t c = 0; c < ncell; ++c)
-      start_[c + 1] += start_[c];
-    pts_.resize(mesh.vertices.size());
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t k = 0; k < mesh.vertices.size(); ++k)
-      pts_[fill[cell_of[k]]++] = mesh.vertices[k];
-    cellmax_.assign(ncell, -kInf);
-    for (std::size_t c = 0; c < ncell; ++c) {
-      auto b = pts_.begin() + start_[c], e = pts_.begin() + start_[c + 1];
-      std::sort(b, e, [](const Vec3& x, const Vec3& y) {
-        return x.z != y.z ? x.z > y.z : (x.x != y.x ? x.x < y.x : x.y < y.y);
-      });
-      if (b != e) cellmax_[c] = b->z;
-    }
-  }
-
-  /// The highest centre over p of a ball of radius R resting on a vertex, or `best` when none
-  /// beats it.
-  double centre_height(Vec2 p, double R, double best) const {
-    if (nx_ == 0) return best;
-    const double R2 = R * R;
-    const int i0 = std::max(0, static_cast<int>(std::floor((p.x - R - origin_.x) / cell_)));
-    const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((p.x + R - origin_.x) / cell_)));
-    const int j0 = std::max(0, static_cast<int>(std::floor((p.y - R - origin_.y) / cell_)));
-    const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((p.y + R - origin_.y) / cell_)));
-    for (int j = j0; j <= j1; ++j) {
-      for (int i = i0; i <= i1; ++i) {
-        const std::size_t c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-                              static_cast<std::size_t>(i);
-        if (cellmax_[c] + R <= best) continue;
-        const double cx = origin_.x + i * cell_, cy = origin_.y + j * cell_;
-        const double dx = std::max({cx - p.x, 0.0, p.x - cx - cell_});
-        const double dy = std::max({cy - p.y, 0.0, p.y - cy - cell_});
-        const double dmin2 = dx * dx + dy * dy;
-        if (dmin2 > R2) continue;
-        const double reach = std::sqrt(R2 - dmin2);  // the most a vertex of the cell adds
-        for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-          const Vec3& v = pts_[k];
-          if (v.z + reach <= best) break;  // highest first
-          const double d2 = (v.x - p.x) * (v.x - p.x) + (v.y - p.y) * (v.y - p.y);
-          if (d2 > R2) continue;
-          best = std::max(best, v.z + std::sqrt(R2 - d2));
-        }
-      }
-    }
-    return best;
-  }
-
- private:
-  std::size_t cell_index(Vec2 q) const {
-    const int i = std::clamp(static_cast<int>((q.x - origin_.x) / cell_), 0, nx_ - 1);
-    const int j = std::clamp(static_cast<int>((q.y - origin_.y) / cell_), 0, ny_ - 1);
-    return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-           static_cast<std::size_t>(i);
-  }
-  double cell_ = 1.0;
-  Vec2 origin_;
-  int nx_ = 0, ny_ = 0;
-  std::vector<std::uint32_t> start_;
-  std::vector<Vec3> pts_;
-  std::vector<double> cellmax_;
-};
-
 // Adaptive lines, second stage: what one line learnt is tried on its neighbours.
 //
 // Why. A feature just inside the ball's reach from a line holds the ball up over a stretch of
@@ -450,7 +361,7 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
   const Axis primary = along_x ? Axis::kY : Axis::kX;
   const std::size_t stride = p.adaptive ? coarse_stride(p) : 1;
   std::vector<std::vector<Vec3>> lines(across.size());
-  std::optional<VertexContacts> vertices;
+  std::optional<trislice_detail::MeshContacts> vertices;
   if (p.vertex_mesh != nullptr) vertices.emplace(*p.vertex_mesh, R);
   auto eval_at = [&](std::size_t i, std::size_t k, const ScanHint& from) {
     const Vec2 xy = along_x ? Vec2{along[k], across[i]} : Vec2{across[i], along[k]};
@@ -600,7 +511,7 @@ Result<Toolpath> scan_finishing_from_lines(const TriSliceModel& model, const Tri
   const double R = tool.radius() + p.stock_to_leave_mm;
   const Axis primary = p.direction == Axis::kX ? Axis::kY : Axis::kX;
   const double floor_z = std::isfinite(p.floor_z_mm) ? p.floor_z_mm : model.bounds.min.z;
-  std::optional<VertexContacts> vertices;
+  std::optional<trislice_detail::MeshContacts> vertices;
   if (p.vertex_mesh != nullptr) vertices.emplace(*p.vertex_mesh, R);
   auto cl_at = [&](Vec2 xy) {
     double c = top.centre_height(xy, R, primary);
@@ -652,7 +563,7 @@ Result<Toolpath> scan_roughing(const TriSliceModel& model, const TriSliceTop& to
                           rough.adaptive_tolerance_mm, ctx);
     if (!lines.ok()) return lines.status();
     const double R = tool.radius() + extra;
-    std::optional<VertexContacts> vertices;
+    std::optional<trislice_detail::MeshContacts> vertices;
     if (p.vertex_mesh != nullptr) vertices.emplace(*p.vertex_mesh, R);
     auto cl_at = [&](Vec2 xy) {
       double c = use.centre_height(xy, R, primary);

@@ -48,12 +48,15 @@ struct ScanParams {
   double plunge_feed_mm_min = 300.0;
   double clearance_z_mm = kAuto;  ///< default: 5 mm above the model (or stock) top
   double floor_z_mm = kAuto;      ///< tip height where nothing lies under the tool: model bottom
-  /// Optional: the part's mesh (must outlive the call). Its vertices then hold the ball up
+  /// Optional: the part's mesh (must outlive the call). Its vertices and its fold edges (where
+  /// the surface turns under as seen from above: wall rims, equators) then hold the ball up
   /// exactly as well. The slices miss a sharp convex vertex lying between them by up to about
   /// a pitch, a first-order error (a box corner off the slice lattice: 30 um vertical, 15 um
-  /// into the part at pitch 0.05 mm, bench/surface_stress.sh); edges and faces between slices
-  /// cost only second-order errors. Vertices are points of the solid, so this never lifts the
-  /// CL above the exact drop. nullptr: the tri-slice model alone (seed 001).
+  /// into the part at pitch 0.05 mm, bench/surface_stress.sh), and a ball grazing a fold
+  /// touches it over a patch narrower than the pitch, so it fell past it (5.9 mm on the
+  /// Table 2 part at 0.05 mm); other edges and faces between slices cost only second-order
+  /// errors. Both are points of the solid, so this never lifts the CL above the exact drop.
+  /// nullptr: the tri-slice model alone (seed 001).
   const Mesh* vertex_mesh = nullptr;
 };
 
