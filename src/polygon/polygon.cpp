@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace swarf {
 namespace {
@@ -287,6 +288,63 @@ PolygonSet normalized(const PolygonSet& set, FillRule rule) {
   cl::Paths solution;
   c.Execute(cl::ctUnion, solution, to_clipper(rule), to_clipper(rule));
   return from_paths(std::move(solution));
+}
+
+PolygonSet simplified(const PolygonSet& set, double tolerance_mm) {
+  if (!(tolerance_mm > 0.0)) return set;
+  const double tol2 = tolerance_mm * tolerance_mm;
+  PolygonSet out;
+  out.rings.reserve(set.rings.size());
+  std::vector<char> keep;
+  std::vector<std::pair<std::size_t, std::size_t>> stack;
+  for (const Ring& ring : set.rings) {
+    const std::size_t n = ring.size();
+    if (n < 6) {
+      out.rings.push_back(ring);
+      continue;
+    }
+    // Closed ring: split at vertex 0 and the vertex farthest from it, then Douglas-Peucker on
+    // both chains (iteratively; index n stands for vertex 0 again).
+    std::size_t far = 0;
+    double far_d = -1.0;
+    for (std::size_t k = 1; k < n; ++k) {
+      const double d = norm_sq(ring[k] - ring[0]);
+      if (d > far_d) {
+        far_d = d;
+        far = k;
+      }
+    }
+    keep.assign(n, 0);
+    keep[0] = keep[far] = 1;
+    stack.assign({{0, far}, {far, n}});
+    while (!stack.empty()) {
+      const auto [a, b] = stack.back();
+      stack.pop_back();
+      if (b <= a + 1) continue;
+      const Vec2 pa = ring[a], e = ring[b % n] - pa;
+      const double len2 = norm_sq(e);
+      double worst = -1.0;
+      std::size_t at = a;
+      for (std::size_t k = a + 1; k < b; ++k) {
+        const Vec2 q = ring[k] - pa;
+        const double t = len2 > 0.0 ? std::clamp(dot(q, e) / len2, 0.0, 1.0) : 0.0;
+        const double d = norm_sq(q - e * t);
+        if (d > worst) {
+          worst = d;
+          at = k;
+        }
+      }
+      if (worst <= tol2) continue;
+      keep[at] = 1;
+      stack.push_back({a, at});
+      stack.push_back({at, b});
+    }
+    Ring r;
+    for (std::size_t k = 0; k < n; ++k)
+      if (keep[k]) r.push_back(ring[k]);
+    out.rings.push_back(r.size() >= 3 ? std::move(r) : ring);
+  }
+  return normalized(out);
 }
 
 PolygonSet unite(const PolygonSet& a, const PolygonSet& b) {

@@ -89,8 +89,10 @@ std::vector<PolygonSet> convolve_slices(const SliceFamily& family, long first_in
     parallel_for(nj, ctx.threads, [&](std::size_t q) {
       if (ctx.cancelled()) return;
       const long j = jlo + static_cast<long>(q);
-      const PolygonSet& s = family.slices[static_cast<std::size_t>(j)];
-      if (s.empty()) return;
+      const PolygonSet& given = family.slices[static_cast<std::size_t>(j)];
+      if (given.empty()) return;
+      const PolygonSet s =
+          options.simplify_mm > 0.0 ? simplified(given, options.simplify_mm) : given;
       for (long k = 0; k <= K; ++k) {
         const long a = j - k * m, b = j + k * m;
         if (!((a >= t0 && a <= t1 && live(a)) || (b >= t0 && b <= t1 && live(b)))) continue;

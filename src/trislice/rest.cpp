@@ -14,6 +14,8 @@ Status validate(const RestOptions& o) {
   if (!(o.tool_radius_mm > 0.0)) return bad_parameter("rest: tool radius must be positive");
   if (!(o.min_thickness_mm >= 0.0)) return bad_parameter("rest: min thickness must be >= 0");
   if (!(o.convolution_tolerance_mm >= 0.0)) return bad_parameter("rest: negative tolerance");
+  if (!(o.convolution.simplify_mm >= 0.0) || !std::isfinite(o.convolution.simplify_mm))
+    return bad_parameter("rest: slice simplification must be >= 0 mm");
   if (!(o.convolution.arc_tolerance_mm > 0.0))
     return bad_parameter("rest: arc tolerance must be positive");
   return {};

@@ -195,6 +195,43 @@ TEST(Polygon, OffsetOfCirclePolygon) {
   EXPECT_NEAR(area(shrunk), inner_area, snap_tolerance(2 * kPi * 10));
 }
 
+// Douglas-Peucker on rings: every dropped vertex stays within the tolerance of the ring that
+// is kept (so the boundary moves by at most that much), the kept vertices are original ones,
+// and a finely faceted circle keeps about one vertex in sqrt(tolerance / sagitta).
+TEST(Polygon, SimplifiedRingsStayWithinTheTolerance) {
+  const Ring c = circle({1, 2}, 10.0, 2000);  // edges 31 um long, sagitta 0.012 um
+  const PolygonSet square_with_hole = subtract(rect_set(-20, -20, 20, 20), PolygonSet{{c}});
+  for (const double tol : {0.0002, 0.001, 0.005}) {
+    const PolygonSet s = simplified(square_with_hole, tol);
+    ASSERT_EQ(s.rings.size(), 2u);
+    std::size_t kept = 0;
+    for (const Ring& r : s.rings) {
+      if (r.size() == 4) continue;  // the square keeps its corners
+      kept = r.size();
+      for (const Vec2& v : r) {  // original vertices only
+        const double rad = norm(v - Vec2{1, 2});
+        EXPECT_NEAR(rad, 10.0, 1e-5);
+      }
+      // Each original vertex lies within tol (plus Clipper's grid) of the kept ring.
+      for (const Vec2& v : c) {
+        double d = 1e9;
+        for (std::size_t k = 0; k < r.size(); ++k) {
+          const Vec2 a = r[k], e = r[(k + 1) % r.size()] - a;
+          const double t = std::clamp(dot(v - a, e) / norm_sq(e), 0.0, 1.0);
+          d = std::min(d, norm(a + e * t - v));
+        }
+        ASSERT_LE(d, tol + 1e-5) << tol;
+      }
+    }
+    // Sagitta of a kept chord L is L^2 / (8 R) <= tol: at least 2 pi R / sqrt(8 R tol) chords.
+    const double chords = 2.0 * kPi * 10.0 / std::sqrt(8.0 * 10.0 * tol);
+    EXPECT_GE(static_cast<double>(kept), chords * 0.99) << tol;
+    EXPECT_LE(static_cast<double>(kept), 2.5 * chords) << tol;
+    EXPECT_NEAR(area(s), area(square_with_hole), perimeter(square_with_hole) * tol);
+  }
+  EXPECT_EQ(simplified(square_with_hole, 0.0).rings, square_with_hole.rings);
+}
+
 TEST(Polygon, ShrinkThenGrowRemovesNarrowPartsAndRestoresWideOnes) {
   // Two 10x10 squares joined by a 1 mm wide bridge: opening by 1 mm removes the bridge.
   PolygonSet shape = unite(rect_set(0, 0, 10, 10), rect_set(20, 0, 30, 10));

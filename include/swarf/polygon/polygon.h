@@ -33,6 +33,11 @@ enum class FillRule { kEvenOdd, kNonZero, kPositive };
 /// removes rings smaller than the resolution.
 PolygonSet normalized(const PolygonSet& set, FillRule rule = FillRule::kNonZero);
 
+/// Each ring with the vertices Douglas-Peucker can drop while it moves by at most
+/// tolerance_mm (rings that would fall under three vertices are kept whole), normalized.
+/// Finely faceted curves keep about one vertex in sqrt(tolerance / sagitta per edge).
+PolygonSet simplified(const PolygonSet& set, double tolerance_mm);
+
 PolygonSet unite(const PolygonSet& a, const PolygonSet& b);
 /// Union of many sets (halves first, then the two: much faster than folding unite(), and than
 /// one pass when the sets overlap).

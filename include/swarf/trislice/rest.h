@@ -27,7 +27,9 @@ struct RestOptions {
   /// Only slices whose level lies in this box (per family, along its axis) are analysed;
   /// empty: all. Saves time when only a feature is of interest.
   Box3 region;
-  ConvolutionOptions convolution{0.005, 1};
+  /// Arc tolerance 5 um, every neighbour (the stride comes from convolution_tolerance_mm),
+  /// slices simplified to 1 um before they are offset (a twentieth of min_thickness_mm).
+  ConvolutionOptions convolution{0.005, 1, 0.001};
   /// Analyse the x and y families only over the xy family's residue (its bounds plus a
   /// pitch): the map and the points keep only what all families agree on, so they come out
   /// the same, sooner where the residue is local (a pocket part: half the time). false:
