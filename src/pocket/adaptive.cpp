@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "pocket/adaptive_internal.h"
@@ -111,6 +112,27 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
 bool gouges_exactly(const Model& m, Vec2 c) {
   return !pocket::point_in_region(m.region, c) ||
          pocket::distance_to_rings(m.region, c) < m.radius_mm + m.wall_stock_mm - 1e-6;
+}
+
+// Points to go through between a and b (in order, ends excluded) so that no straight piece
+// comes nearer to the walls than the tool radius (plus wall stock) by exact geometry. The path's
+// points keep 2 um off the walls, but a straight move between two of them round the corner of
+// an island cuts in by its sagitta (4 um between points 0.4 mm apart round a vertex, measured
+// by the sweep): the middle of such a move is pushed off the nearest wall to the same
+// kWallClearanceMm, and each half is checked again.
+void keep_off_walls(const Model& m, Vec2 a, Vec2 b, int depth, std::vector<Vec2>& via) {
+  const double reach = m.radius_mm + m.wall_stock_mm;
+  if (depth > 16 || pocket::segment_distance_to_rings(m.region, a, b) >= reach - 1e-7) return;
+  const Vec2 mid = (a + b) * 0.5;
+  const Vec2 w = pocket::nearest_on_rings(m.region, mid);
+  const double d = distance(mid, w);
+  if (d < 1e-9 || !pocket::point_in_region(m.region, mid)) return;  // not a corner: leave it
+  const Vec2 q = w + (mid - w) * ((reach + kWallClearanceMm) / d);
+  if (!pocket::point_in_region(m.region, q) || pocket::distance_to_rings(m.region, q) < reach)
+    return;
+  keep_off_walls(m, a, q, depth + 1, via);
+  via.push_back(q);
+  keep_off_walls(m, q, b, depth + 1, via);
 }
 
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
@@ -296,8 +318,16 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.boundary_groups = lp.boundary_groups;
   resimulate(m, order, lp, res);
 
-  // Output simplification: runs between kind changes and jumps, Douglas-Peucker.
+  // Output simplification: runs between kind changes and jumps, Douglas-Peucker. A chord may
+  // pass up to the tolerance inside the curve it replaces, i.e. towards an island the path
+  // goes round or into a concave wall (the sweep measured 20 um at the default 0.25 pixel):
+  // a chord is kept only if it stays the tool radius (plus wall stock) off the walls by exact
+  // geometry; otherwise the run is split further.
   const double tol = params.simplify_tolerance_mm > 0.0 ? params.simplify_tolerance_mm : 0.25 * m.h;
+  const double reach = m.radius_mm + m.wall_stock_mm;
+  auto chord_ok = [&](std::size_t a, std::size_t b) {
+    return pocket::segment_distance_to_rings(m.region, lp.pts[a], lp.pts[b]) >= reach - 1e-7;
+  };
   std::vector<std::size_t> keep;
   std::size_t run = 0;
   for (std::size_t k = 1; k <= lp.kind.size(); ++k) {
@@ -305,7 +335,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
                      (lp.kind[k] == StepKind::kLink) != (lp.kind[k - 1] == StepKind::kLink);
     if (!brk) continue;
     std::vector<std::size_t> part;
-    pocket::simplify_indices(lp.pts, run, k, tol, part);
+    pocket::simplify_indices(lp.pts, run, k, tol, part, chord_ok);
     if (!keep.empty() && keep.back() == part.front()) part.erase(part.begin());
     keep.insert(keep.end(), part.begin(), part.end());
     run = k;
@@ -364,6 +394,13 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       }
       Move mv = make_move(MoveKind::kFeed, end, params.feed_mm_min, !link);
       mv.engagement_deg = static_cast<float>(angle_of(m, static_cast<int>(px), len));
+      std::vector<Vec2> via;
+      keep_off_walls(m, lp.pts[a], lp.pts[b], 0, via);
+      for (const Vec2& v : via) {
+        Move piece = mv;
+        piece.end = to_vec3(v, z);
+        tp.moves.push_back(piece);
+      }
       tp.moves.push_back(mv);
     }
     tp.moves.push_back(

@@ -3,6 +3,8 @@
 // (path_postprocess.cpp) and the driver (adaptive.cpp).
 #pragma once
 
+#include <functional>
+
 #include <vector>
 
 #include "pocket/pixel_stock.h"
@@ -90,8 +92,10 @@ struct LinkCosts {
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
 
-/// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included.
+/// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
+/// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
-                      std::vector<std::size_t>& keep);
+                      std::vector<std::size_t>& keep,
+                      const std::function<bool(std::size_t, std::size_t)>& chord_ok = {});
 
 }  // namespace swarf::pocket

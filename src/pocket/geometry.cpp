@@ -55,6 +55,28 @@ double distance_to_rings(const PolygonSet& region, Vec2 p) {
   return d;
 }
 
+double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b) {
+  double d = std::numeric_limits<double>::infinity();
+  const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
+  for (const Ring& r : region.rings)
+    for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+      const Vec2 c = r[i], e = r[(i + 1) % n];
+      // Boxes further apart than the best so far cannot do better.
+      const double gx = std::max({std::min(c.x, e.x) - hi.x, 0.0, lo.x - std::max(c.x, e.x)});
+      const double gy = std::max({std::min(c.y, e.y) - hi.y, 0.0, lo.y - std::max(c.y, e.y)});
+      if (gx * gx + gy * gy >= d * d) continue;
+      // Proper or touching crossing: distance 0.
+      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
+      const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
+      if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+          ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0))
+        return 0.0;
+      d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
+                    point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+    }
+  return d;
+}
+
 Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p) {
   double best = std::numeric_limits<double>::infinity();
   Vec2 q = p;

@@ -23,6 +23,8 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
 double point_line_distance(Vec2 p, Vec2 a, Vec2 b);
 /// Distance from p to the nearest edge of any ring.
 double distance_to_rings(const PolygonSet& region, Vec2 p);
+/// Least distance from the segment a-b to any ring's edge (0 where it crosses one).
+double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b);
 /// The nearest point to p on any ring's edges.
 Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p);
 

@@ -183,7 +183,8 @@ std::vector<std::size_t> pull_taut(const Model& m, const PixelStock& stock,
 }  // namespace
 
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
-                      std::vector<std::size_t>& keep) {
+                      std::vector<std::size_t>& keep,
+                      const std::function<bool(std::size_t, std::size_t)>& chord_ok) {
   // Iterative Douglas-Peucker (no recursion depth limit on long paths).
   std::vector<std::pair<std::size_t, std::size_t>> stack{{first, last}};
   std::vector<bool> kept(last - first + 1, false);
@@ -203,6 +204,10 @@ void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size
         worst = d;
         at = k;
       }
+    }
+    if (worst <= tol && b > a + 1 && chord_ok && !chord_ok(a, b)) {
+      at = a + (b - a) / 2;  // within the tolerance but too near a wall: split in the middle
+      worst = tol + 1.0;
     }
     if (worst > tol) {
       kept[at - first] = true;
