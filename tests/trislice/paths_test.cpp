@@ -367,6 +367,7 @@ TEST(TriSlicePaths, AdaptiveScanStaysWithinToleranceOfTheUniformGrid) {
   const TriSliceTop top = TriSliceTop::build(*model);
   ScanParams p;
   p.adaptive_model_fraction = 0.0;  // the 1 um as given (the model's bound here is 1.27 um)
+  p.refine_steep = false;           // the lattice walk alone (its steep stretches: below)
   const AdaptiveVsUniform r = adaptive_vs_uniform(top, model->bounds, p);
   EXPECT_LE(r.below, p.adaptive_tolerance_mm + 1e-9);
   EXPECT_LE(r.above, p.adaptive_tolerance_mm + 1e-9);
@@ -425,6 +426,7 @@ TEST(TriSlicePaths, AdaptiveLinesAreSubsetsOfTheUniformGridForAnyLength) {
   for (double sampling : {0.1, 0.13, 0.3, 0.7})
     for (double width : {20.0, 20.3, 21.1}) {
       ScanParams p;
+      p.refine_steep = false;  // lattice points only (MovesAcrossAWallDoNotCutIntoIt: below it)
       p.stepover_mm = 3.0;
       p.sampling_mm = sampling;
       p.region = Box2{{-10.0, -10.0}, {-10.0 + width, 10.0}};

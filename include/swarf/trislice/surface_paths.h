@@ -41,6 +41,12 @@ struct ScanParams {
   /// nothing): with 1 and a ø8 ball, 5.1 um at ds = 0.25 mm, 1.3 um at 0.125 mm, and the
   /// 1 um above at 0.05 mm and finer. 0: adaptive_tolerance_mm as given.
   double adaptive_model_fraction = 1.0;
+  /// Adaptive only: below the lattice where a stretch steeper than 3:1 still leaves its
+  /// chord by more than tol / 2 (normal to it), down to 2 um. Beside a wall the CL jumps, and
+  /// the straight move between two lattice points across the jump ran through the wall's top
+  /// (70 um into a block at 0.1 mm sampling); now at most the last step's width (2-4 um).
+  /// false: lattice points only (the lattice walk alone).
+  bool refine_steep = true;
   double stock_to_leave_mm = 0.0;
   Box2 region;                  ///< tool-axis area; empty: the model's xy bounds
   double tolerance_mm = 0.001;  ///< simplification of each line (chordal), 0 = keep all
