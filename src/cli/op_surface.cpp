@@ -124,9 +124,11 @@ Result<OperationOutput> run_surface(const OperationInput& in) {
   sp.adaptive_model_fraction = p["adaptive_model_fraction"].get<double>();
   sp.feed_mm_min = feed;
   sp.plunge_feed_mm_min = plunge;
-  // The mesh's vertices are exact contacts too: the slices pass a convex corner up to a pitch
-  // away (first-order error, docs/trislice.md "Surface stress set").
+  // The mesh's vertices and fold edges are exact contacts too: the slices pass a convex corner
+  // up to a pitch away and can miss a grazed fold altogether (docs/trislice.md). Steep
+  // stretches are refined below the lattice, so no move runs through a wall's top.
   sp.vertex_mesh = &stl->mesh;
+  sp.refine_steep = true;
   if (!solid) return scan_open_mesh(in, stl->mesh, check, sp, std::move(out));
   const auto t0 = std::chrono::steady_clock::now();
   // Scanning reads all three families (the xy one holds steep walls), waterlines only z.

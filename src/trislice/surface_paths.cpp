@@ -449,6 +449,20 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
         constexpr double kSteep = 3.0;
         const Vec3 &a0 = in[k], &b0 = in[k + 1];
         if (std::fabs(b0.z - a0.z) <= kSteep * std::hypot(b0.x - a0.x, b0.y - a0.y)) continue;
+        // A smooth steep stretch turns little from its neighbours: a chord of length s whose
+        // direction differs by dtheta from the next ones bends away from an arc through them
+        // by about s dtheta / 8. Where that is under tol / 4 on both sides it is left as it
+        // is; a jump turns by about 90 degrees and is always refined.
+        {
+          auto dir = [](const Vec3& u, const Vec3& v) {
+            return std::atan2(v.z - u.z, std::hypot(v.x - u.x, v.y - u.y));
+          };
+          const double th = dir(a0, b0);
+          const double before = k > 0 ? std::fabs(th - dir(in[k - 1], a0)) : kPi;
+          const double after = k + 2 < in.size() ? std::fabs(dir(b0, in[k + 2]) - th) : kPi;
+          const double s = distance(a0, b0);
+          if (s * std::max(before, after) / 8.0 < 0.25 * tol) continue;
+        }
         stack.assign(1, {a0, b0});
         // Depth first, right half pushed first, so points come out in order.
         while (!stack.empty()) {

@@ -220,6 +220,7 @@ TEST(TriSliceStress, MovesAcrossAWallDoNotCutIntoIt) {
   sp.stepover_mm = 0.53;
   sp.sampling_mm = 0.1;
   sp.vertex_mesh = &part;
+  sp.refine_steep = true;
   for (const Axis dir : {Axis::kX, Axis::kY}) {
     sp.direction = dir;
     auto lines = scan_cl_lines(top, model->bounds, r, 0.0, sp);

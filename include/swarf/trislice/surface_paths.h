@@ -45,8 +45,9 @@ struct ScanParams {
   /// chord by more than tol / 2 (normal to it), down to 2 um. Beside a wall the CL jumps, and
   /// the straight move between two lattice points across the jump ran through the wall's top
   /// (70 um into a block at 0.1 mm sampling); now at most the last step's width (2-4 um).
-  /// false: lattice points only (the lattice walk alone).
-  bool refine_steep = true;
+  /// Like vertex_mesh, an addition to the paper's path that the CLI turns on; false (the
+  /// default): lattice points only.
+  bool refine_steep = false;
   double stock_to_leave_mm = 0.0;
   Box2 region;                  ///< tool-axis area; empty: the model's xy bounds
   double tolerance_mm = 0.001;  ///< simplification of each line (chordal), 0 = keep all
