@@ -217,6 +217,22 @@ TEST(ConvolutionalOffset, EnvelopePruningEqualsBruteForce) {
   }
 }
 
+// Brute force over every ring edge of every xy slice: the highest z_l + sqrt(r^2 - d^2), d the
+// distance from p to the edge's nearest point within r (-1e9 when none).
+double brute_level_height(const SliceFamily& fam, Vec2 p, double r) {
+  double brute = -1e9;
+  for (std::size_t j = 0; j < fam.size(); ++j)
+    for (const Ring& ring : fam.slices[j].rings)
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
+        const double len2 = dot(e, e);
+        const double t = len2 > 0 ? std::clamp(dot(p - a, e) / len2, 0.0, 1.0) : 0.0;
+        const double d2 = norm_sq(a + e * t - p);
+        if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
+      }
+  return brute;
+}
+
 // The level index (cells, super-cells, highest level first) against every ring edge of every
 // xy slice: z_l + sqrt(r^2 - d^2) for the nearest point of the edge within r.
 TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
@@ -228,16 +244,7 @@ TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
   std::size_t n = 0;
   for (double y = -43.0; y <= 43.0; y += 4.3)
     for (double x = -43.0; x <= 43.0; x += 0.53) {
-      double brute = -1e9;
-      for (std::size_t j = 0; j < fam.size(); ++j)
-        for (const Ring& ring : fam.slices[j].rings)
-          for (std::size_t k = 0; k < ring.size(); ++k) {
-            const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
-            const double len2 = dot(e, e);
-            const double t = len2 > 0 ? std::clamp(dot(Vec2{x, y} - a, e) / len2, 0.0, 1.0) : 0.0;
-            const double d2 = norm_sq(a + e * t - Vec2{x, y});
-            if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
-          }
+      const double brute = brute_level_height(fam, {x, y}, r);
       EXPECT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
       ++n;
     }
@@ -291,16 +298,7 @@ TEST(ConvolutionalOffset, LevelEnvelopeOnDraftedAndVerticalWallsEqualsBruteForce
   std::size_t n = 0;
   for (double y = -33.0; y <= 33.0; y += 2.9)
     for (double x = -55.0; x <= 57.0; x += 0.47) {
-      double brute = -1e9;
-      for (std::size_t j = 0; j < fam.size(); ++j)
-        for (const Ring& ring : fam.slices[j].rings)
-          for (std::size_t k = 0; k < ring.size(); ++k) {
-            const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()], e = b - a;
-            const double len2 = dot(e, e);
-            const double t = len2 > 0 ? std::clamp(dot(Vec2{x, y} - a, e) / len2, 0.0, 1.0) : 0.0;
-            const double d2 = norm_sq(a + e * t - Vec2{x, y});
-            if (d2 <= r * r) brute = std::max(brute, fam.level(j) + std::sqrt(r * r - d2));
-          }
+      const double brute = brute_level_height(fam, {x, y}, r);
       ASSERT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
       if (brute > 0.0) ++n;
     }
