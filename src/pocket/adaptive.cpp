@@ -113,27 +113,6 @@ bool gouges_exactly(const Model& m, Vec2 c) {
          pocket::distance_to_rings(m.region, c) < m.radius_mm + m.wall_stock_mm - 1e-6;
 }
 
-// Points to go through between a and b (in order, ends excluded) so that no straight piece
-// comes nearer to the walls than the tool radius (plus wall stock) by exact geometry. The path's
-// points keep 2 um off the walls, but a straight move between two of them round the corner of
-// an island cuts in by its sagitta (4 um between points 0.4 mm apart round a vertex, measured
-// by the sweep): the middle of such a move is pushed off the nearest wall to the same
-// kWallClearanceMm, and each half is checked again.
-void keep_off_walls(const Model& m, Vec2 a, Vec2 b, int depth, std::vector<Vec2>& via) {
-  const double reach = m.radius_mm + m.wall_stock_mm;
-  if (depth > 16 || pocket::segment_distance_to_rings(m.region, a, b) >= reach - 1e-7) return;
-  const Vec2 mid = (a + b) * 0.5;
-  const Vec2 w = pocket::nearest_on_rings(m.region, mid);
-  const double d = distance(mid, w);
-  if (d < 1e-9 || !pocket::point_in_region(m.region, mid)) return;  // not a corner: leave it
-  const Vec2 q = w + (mid - w) * ((reach + kWallClearanceMm) / d);
-  if (!pocket::point_in_region(m.region, q) || pocket::distance_to_rings(m.region, q) < reach)
-    return;
-  keep_off_walls(m, a, q, depth + 1, via);
-  via.push_back(q);
-  keep_off_walls(m, q, b, depth + 1, via);
-}
-
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
 void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
@@ -393,8 +372,11 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       }
       Move mv = make_move(MoveKind::kFeed, end, params.feed_mm_min, !link);
       mv.engagement_deg = static_cast<float>(angle_of(m, static_cast<int>(px), len));
+      // A straight move between two points of a pass round an island's vertex cuts in by its
+      // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through
+      // its middle pushed off the wall to the same kWallClearanceMm as the wall passes.
       std::vector<Vec2> via;
-      keep_off_walls(m, lp.pts[a], lp.pts[b], 0, via);
+      pocket::keep_off_rings(m.region, reach, kWallClearanceMm, lp.pts[a], lp.pts[b], via);
       for (const Vec2& v : via) {
         Move piece = mv;
         piece.end = to_vec3(v, z);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pocket/geometry.h"
 #include "swarf/polygon/polygon.h"
 
 namespace swarf {
@@ -79,6 +80,21 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
         // pocket's outer rings) run counter-clockwise; normalized holes are clockwise, so
         // every ring keeps its orientation for climb and is reversed for conventional.
         if (!p.climb) std::reverse(l.pts.begin(), l.pts.end());
+        if (lv == 0) {
+          // The rings next to the walls: their round joins are chords of arcs round the walls'
+          // convex corners (an island's vertex) and cut in by up to the arc tolerance (5-11 um
+          // by the sweep); each such edge goes through its middle pushed 2 um off the wall.
+          Ring kept;
+          std::vector<Vec2> via;
+          for (std::size_t k = 0; k < l.pts.size(); ++k) {
+            kept.push_back(l.pts[k]);
+            via.clear();
+            pocket::keep_off_rings(pocket.region, r + p.wall_stock_mm, 0.002, l.pts[k],
+                                   l.pts[(k + 1) % l.pts.size()], via);
+            kept.insert(kept.end(), via.begin(), via.end());
+          }
+          l.pts = std::move(kept);
+        }
         loops.push_back(std::move(l));
       }
       level = offset(level, -step, oo);

@@ -25,8 +25,10 @@ TEST(ContourParallel, LWithIslandsHasNoGougeAndLeavesOnlyUnreachableMaterial) {
   std::printf(
       "  contour L: gouge %.3f mm, residual %.2f mm2, rings %d, retracts %d, max eng %.0f\n",
       s.max_gouge_mm, s.residual_mm2, r->rings, r->retracts_per_layer, s.max_engagement_deg);
-  // Offsets are exact polygons: any gouge is the checker's pixel at most.
-  EXPECT_LE(s.max_gouge_mm, 0.08);
+  // By exact geometry: the round joins round the islands' corners are chords that cut in by
+  // up to the arc tolerance, so the rings next to the walls go round them 2 um off instead;
+  // what is left is Clipper's 1e-5 mm grid at the offset's own vertices.
+  EXPECT_LE(s.max_gouge_mm, 1e-5);
   EXPECT_LE(s.residual_mm2, 0.5);
 }
 
