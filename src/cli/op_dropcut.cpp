@@ -1,5 +1,6 @@
 // `swarf dropcut`: the exact drop-cutter as a raster strategy, and the CL reference.
 #include <chrono>
+#include <limits>
 #include <sstream>
 
 #include "cli/operation.h"
@@ -58,6 +59,14 @@ Result<OperationOutput> run_dropcut(const OperationInput& in) {
   for (std::size_t start = 0; start < cl->size(); start += per_line) {
     std::vector<Vec3> line(cl->begin() + static_cast<long>(start),
                            cl->begin() + static_cast<long>(start + per_line));
+    // Steep stretches (a jump beside a wall) refined below the sampling with exact drops,
+    // so no move runs through the wall's top; the CSV above keeps the grid.
+    std::size_t hint = std::numeric_limits<std::size_t>::max();
+    line = refine_steep_stretches(line, std::max(p["tolerance"].get<double>(), 1e-4), [&](Vec2 xy) {
+      const DropResult r = dc->drop(xy, hint);
+      if (r.hit()) hint = r.triangle;
+      return r.hit() ? std::max(r.tip_z, floor_z) : floor_z;
+    });
     line = simplify_polyline(line, p["tolerance"].get<double>());
     tp.rapid_to({line.front().x, line.front().y, tp.clearance_z_mm});
     tp.plunge_to(line.front().z, plunge);

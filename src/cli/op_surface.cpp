@@ -64,6 +64,11 @@ Result<OperationOutput> scan_open_mesh(const OperationInput& in, const Mesh& mes
       q.z += s;
   }
   std::string csv = cl_csv(lines);
+  if (sp.refine_steep && sp.adaptive)  // as the tri-slice scan (the CSV keeps the grid)
+    for (auto& line : lines)
+      line = refine_steep_stretches(line, sp.adaptive_tolerance_mm, [&](Vec2 xy) {
+        return std::max(dc->drop_z(xy), floor_z - s) + s;
+      });
   auto tp = scan_finishing_from_cl(
       std::move(lines), tool, sp, dc->mesh_bounds().max.z + s + 5.0,
       "drop-cutter scan finishing (open mesh)",

@@ -80,6 +80,53 @@ std::vector<Vec2> simplify_polyline(const std::vector<Vec2>& points, double tole
   return simplify_impl(points, tolerance_mm);
 }
 
+std::vector<Vec3> refine_steep_stretches(const std::vector<Vec3>& in, double tol,
+                                         const std::function<double(Vec2)>& height) {
+  if (in.size() < 2 || !(tol > 0.0)) return in;
+  constexpr double kMinWidthMm = 2e-3;
+  // Only stretches steeper than kSteep: a jump rises by millimetres over a sampling step. A
+  // smooth arc at that slope (the ball rolling over a rim, radius r) is bent away from its
+  // chord by at most w^2 (1 + kSteep^2) / (8 r) normal to it (3 um for a 0.1 mm step and
+  // r = 4 mm); gentler stretches are the sampling's own business.
+  constexpr double kSteep = 3.0;
+  auto dir = [](const Vec3& u, const Vec3& v) {
+    return std::atan2(v.z - u.z, std::hypot(v.x - u.x, v.y - u.y));
+  };
+  std::vector<Vec3> out;
+  out.reserve(in.size());
+  std::vector<std::pair<Vec3, Vec3>> stack;
+  for (std::size_t k = 0; k + 1 < in.size(); ++k) {
+    out.push_back(in[k]);
+    const Vec3 &a0 = in[k], &b0 = in[k + 1];
+    if (std::fabs(b0.z - a0.z) <= kSteep * std::hypot(b0.x - a0.x, b0.y - a0.y)) continue;
+    const double th = dir(a0, b0);
+    const double before = k > 0 ? std::fabs(th - dir(in[k - 1], a0)) : kPi;
+    const double after = k + 2 < in.size() ? std::fabs(dir(b0, in[k + 2]) - th) : kPi;
+    if (distance(a0, b0) * std::max(before, after) / 8.0 < 0.25 * tol) continue;
+    // Depth first, right half pushed first, so points come out in order.
+    stack.assign(1, {a0, b0});
+    while (!stack.empty()) {
+      const auto [a, b] = stack.back();
+      stack.pop_back();
+      const double w = std::hypot(b.x - a.x, b.y - a.y);
+      if (w >= 2.0 * kMinWidthMm) {
+        const Vec2 mxy{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+        const double zm = height(mxy);
+        const double off = std::fabs(zm - 0.5 * (a.z + b.z)) * w / std::hypot(w, b.z - a.z);
+        if (off > 0.5 * tol) {
+          const Vec3 m{mxy.x, mxy.y, zm};
+          stack.push_back({m, b});
+          stack.push_back({a, m});
+          continue;
+        }
+      }
+      if (!(b == b0)) out.push_back(b);
+    }
+  }
+  out.push_back(in.back());
+  return out;
+}
+
 std::vector<Vec2> chaikin_smooth(const std::vector<Vec2>& points, int iterations, double ratio) {
   // A ratio above 0.5 would cross the two new points over; 0.5 merges them into one.
   if (!(ratio > 0.0)) return points;

@@ -420,13 +420,7 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
   if (stride > 1) cross_check_lines(lines, along, along_x, stride, tol, eval_at, ctx);
   if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
   if (stride > 1 && p.refine_steep) {
-    // Below the lattice where the path still leaves the CL. Beside a wall the CL jumps (the
-    // ball rests on the rim or falls past it), and rolling over a rim it rises as a circle
-    // with a vertical tangent: two lattice points 0.1 mm apart then span millimetres of
-    // height, and the straight move between them runs through the wall, up to a lattice
-    // step deep. A stretch whose midpoint leaves its chord by more than tol / 2, measured
-    // normal to the chord, is halved again, down to 2 um: a jump becomes a step that wide.
-    constexpr double kMinWidthMm = 2e-3;
+    // Below the lattice where a steep stretch still leaves the CL (postprocess.h).
     auto eval_xy = [&](Vec2 xy, ScanHint& hint) {
       double c = top.centre_height(xy, R, primary, &hint);
       if (vertices) c = vertices->centre_height(xy, R, c);
@@ -434,58 +428,9 @@ Result<std::vector<std::vector<Vec3>>> cl_lines(const TriSliceTop& top, const Bo
       return std::min(z, clip_z);
     };
     parallel_for(lines.size(), ctx.threads, [&](std::size_t i) {
-      if (ctx.cancelled() || lines[i].size() < 2) return;
-      const std::vector<Vec3>& in = lines[i];
-      std::vector<Vec3> out;
-      out.reserve(in.size());
+      if (ctx.cancelled()) return;
       ScanHint hint;
-      std::vector<std::pair<Vec3, Vec3>> stack;
-      for (std::size_t k = 0; k + 1 < in.size(); ++k) {
-        out.push_back(in[k]);
-        // Only stretches steeper than kSteep: a jump rises by millimetres over a lattice step.
-        // A smooth arc at that slope (the ball rolling over a rim, radius r) is bent away
-        // from its chord by at most w^2 (1 + kSteep^2) / (8 r) normal to it (3 um for a
-        // 0.1 mm step and r = 4 mm), and gentler stretches were checked by the adaptive walk.
-        constexpr double kSteep = 3.0;
-        const Vec3 &a0 = in[k], &b0 = in[k + 1];
-        if (std::fabs(b0.z - a0.z) <= kSteep * std::hypot(b0.x - a0.x, b0.y - a0.y)) continue;
-        // A smooth steep stretch turns little from its neighbours: a chord of length s whose
-        // direction differs by dtheta from the next ones bends away from an arc through them
-        // by about s dtheta / 8. Where that is under tol / 4 on both sides it is left as it
-        // is; a jump turns by about 90 degrees and is always refined.
-        {
-          auto dir = [](const Vec3& u, const Vec3& v) {
-            return std::atan2(v.z - u.z, std::hypot(v.x - u.x, v.y - u.y));
-          };
-          const double th = dir(a0, b0);
-          const double before = k > 0 ? std::fabs(th - dir(in[k - 1], a0)) : kPi;
-          const double after = k + 2 < in.size() ? std::fabs(dir(b0, in[k + 2]) - th) : kPi;
-          const double s = distance(a0, b0);
-          if (s * std::max(before, after) / 8.0 < 0.25 * tol) continue;
-        }
-        stack.assign(1, {a0, b0});
-        // Depth first, right half pushed first, so points come out in order.
-        while (!stack.empty()) {
-          const auto [a, b] = stack.back();
-          stack.pop_back();
-          const double w = std::hypot(b.x - a.x, b.y - a.y);
-          if (w >= 2.0 * kMinWidthMm) {
-            const Vec2 mxy{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-            const double zm = eval_xy(mxy, hint);
-            const double dz = b.z - a.z;
-            const double off = std::fabs(zm - 0.5 * (a.z + b.z)) * w / std::hypot(w, dz);
-            if (off > 0.5 * tol) {
-              const Vec3 m{mxy.x, mxy.y, zm};
-              stack.push_back({m, b});
-              stack.push_back({a, m});
-              continue;
-            }
-          }
-          if (!(b == in[k + 1])) out.push_back(b);
-        }
-      }
-      out.push_back(in.back());
-      lines[i] = std::move(out);
+      lines[i] = refine_steep_stretches(lines[i], tol, [&](Vec2 xy) { return eval_xy(xy, hint); });
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "scan: cancelled"};
   }

@@ -271,3 +271,54 @@ TEST(PostprocessSimplifyToolpath, MergesRunsOfSameKindFeedAndFlag) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// A CL line across a wall: 0 up to x* = 1.2345, then a rim arc of radius 4 rising from z = 5
+// (the ball resting on the rim of a wall 4 mm away), sampled every 0.1 mm. The refined line
+// finds the jump to within 4 um and follows the arc, so the straight moves between its points
+// stay within the tolerance of the true CL everywhere off the jump; a gentle line is left alone.
+TEST(PostprocessSteepStretches, AJumpBecomesAStepAFewMicrometresWide) {
+  const double xs = 1.2345;
+  auto cl = [&](double x) {
+    if (x < xs) return 0.0;
+    const double d = 4.0 - (x - xs);  // horizontal distance to the rim
+    return 5.0 + std::sqrt(std::max(0.0, 16.0 - d * d));
+  };
+  std::vector<Vec3> line;
+  for (int k = 0; k <= 30; ++k)
+    line.push_back({0.1 * k, 0.0, cl(0.1 * k)});
+  int evals = 0;
+  const double tol = 0.001;
+  const std::vector<Vec3> out = refine_steep_stretches(line, tol, [&](Vec2 p) {
+    ++evals;
+    return cl(p.x);
+  });
+  ASSERT_GT(out.size(), line.size());
+  EXPECT_EQ(out.front(), line.front());
+  EXPECT_EQ(out.back(), line.back());
+  double widest_jump = 0.0, worst = 0.0;
+  for (std::size_t k = 0; k + 1 < out.size(); ++k) {
+    ASSERT_LT(out[k].x, out[k + 1].x);
+    if (out[k].x < xs && out[k + 1].x >= xs) widest_jump = out[k + 1].x - out[k].x;
+    // Off the jump, the chord against the true CL at 50 points.
+    if (out[k].x >= xs || out[k + 1].x < xs)
+      for (int q = 1; q < 50; ++q) {
+        const double x = out[k].x + (out[k + 1].x - out[k].x) * q / 50.0;
+        const double z = out[k].z + (out[k + 1].z - out[k].z) * q / 50.0;
+        worst = std::max(worst, cl(x) - z);
+      }
+  }
+  EXPECT_LE(widest_jump, 0.004);
+  EXPECT_LE(worst, 0.02);  // vertically, where the arc is nearly vertical: normal error < tol
+  EXPECT_LT(evals, 200);
+  // Without refinement the move across the jump spans the whole 0.1 mm step.
+  std::vector<Vec3> gentle;
+  for (int k = 0; k <= 30; ++k)
+    gentle.push_back({0.1 * k, 0.0, 0.5 * std::sin(0.1 * k)});
+  EXPECT_EQ(refine_steep_stretches(gentle, tol, [](Vec2) { return 0.0; }), gentle);
+}
+
+}  // namespace
+}  // namespace swarf
