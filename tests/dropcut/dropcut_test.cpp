@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
+#include <utility>
 
 namespace swarf {
 namespace {
@@ -165,6 +167,64 @@ TEST(DropCutter, ContactFormulasMatchDenseSamplingOfEachTriangle) {
         EXPECT_LE(exact - sampled, 0.06) << "shape R=" << shape.radius_mm;
       }
     }
+  }
+}
+
+// Bull-nose against edges: the answer comes from Newton's method on the tip height along the
+// edge, after a tangent bound that rejects edges. Truth here: a dense scan of each edge, then a
+// ternary search around its best sample (another method, to 1e-13 along the edge). Vertical
+// triangles hold the cutter on their edges and corners only, so their edges are what is tested;
+// points are drawn so that the edges cross the corner torus, its rim and the flat bottom.
+TEST(DropCutter, BullNoseEdgeContactMatchesAnIndependentSearch) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-6.0, 6.0), z(-2.0, 2.0);
+  for (const CutterShape& shape : {CutterShape{3.0, 1.0}, CutterShape{5.0, 2.0},
+                                   CutterShape{4.0, 3.9}, CutterShape{4.0, 0.05}}) {
+    int hits = 0;
+    for (int k = 0; k < 400; ++k) {
+      // A vertical triangle: two points on top, one straight below the first.
+      const Vec3 a{u(rng), u(rng), z(rng)}, b{u(rng), u(rng), z(rng)};
+      Mesh tri;
+      tri.vertices = {a, b, a - Vec3{0, 0, 5}};
+      tri.triangles = {{0, 1, 2}};
+      auto dc = DropCutter::build(tri, shape);
+      ASSERT_TRUE(dc.ok());
+      const Vec2 p{0.3 * u(rng), 0.3 * u(rng)};
+      auto tip = [&](Vec3 q) {
+        const double d = norm(q.xy() - p);
+        return d <= shape.radius_mm ? q.z - height(shape, d)
+                                    : -std::numeric_limits<double>::infinity();
+      };
+      double truth = -std::numeric_limits<double>::infinity();
+      for (const auto& [s, e] :
+           {std::pair{a, b}, std::pair{b, a - Vec3{0, 0, 5}}, std::pair{a - Vec3{0, 0, 5}, a}}) {
+        constexpr int kN = 4000;
+        int at = 0;
+        double top = -std::numeric_limits<double>::infinity();
+        for (int i = 0; i <= kN; ++i) {
+          const double f = tip(s + (e - s) * (static_cast<double>(i) / kN));
+          if (f > top) top = f, at = i;
+        }
+        if (!std::isfinite(top)) continue;
+        double lo = std::max(0.0, (at - 1.0) / kN), hi = std::min(1.0, (at + 1.0) / kN);
+        while (hi - lo > 1e-13) {
+          const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+          if (tip(s + (e - s) * m1) < tip(s + (e - s) * m2))
+            lo = m1;
+          else
+            hi = m2;
+        }
+        truth = std::max({truth, top, tip(s + (e - s) * lo)});
+      }
+      const DropResult got = dc->drop(p);
+      ASSERT_EQ(got.hit(), std::isfinite(truth)) << k;
+      if (!got.hit()) continue;
+      ++hits;
+      // Never above what the cutter can rest on, never below the search's best.
+      EXPECT_GE(got.tip_z, truth - 1e-9) << k;
+      EXPECT_LE(got.tip_z, truth + 1e-9) << k;
+    }
+    EXPECT_GT(hits, 150) << shape.radius_mm << " " << shape.corner_radius_mm;
   }
 }
 
