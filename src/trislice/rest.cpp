@@ -28,11 +28,13 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
   out.pitch_mm = model.pitch_mm;
   out.bounds = model.bounds;
   // The xy family first: a point is residue only where all the families analysed agree
-  // (thickness_map), so the x and y families are needed only over the xy family's residue
-  // (its bounds plus a pitch, for the map's nearest-slice reading); elsewhere their answer
-  // cannot change the map or the points. The Kiri:Moto pocket part takes half the time; on
-  // the torus part the xy family's own film along the outer fillet spans the part, so
-  // nothing is skipped there.
+  // (thickness_map), so the x family is needed only over the xy family's residue (its bounds
+  // plus a pitch, for the map's nearest-slice reading) and the y family only over where both
+  // hold some; elsewhere their answer cannot change the map or the points. The Kiri:Moto
+  // pocket part takes half the time. On the torus part the xy family's own film along the
+  // outer flank spans the part, so the x family is analysed whole, but its residue stays
+  // within |y| < 25.1 mm (the inner fillet, and the flank where its planes graze it): the y
+  // family reads 499 of its 801 slices at 0.1 mm (14.6 -> 11.6 s with both cores).
   Box3 limit = o.region;
   bool nothing_left = false;
   for (int a : {2, 0, 1}) {
@@ -94,24 +96,32 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
     });
     if (ctx.cancelled()) return Status{Error::kCancelled, "rest: cancelled"};
     ctx.report("unmachinable regions", a == 2 ? 1.0 / 3.0 : (a + 2) / 3.0);
-    if (a == 2 && o.prune_by_xy_residue) {
+    if ((a == 2 || a == 0) && o.prune_by_xy_residue) {
+      // The xy footprint of this family's residue: the xy family's bounds, or for the x family
+      // (slices in (y, z)) each slice's level x with the y extent of its residue. The next
+      // families are analysed only over it (plus a pitch, for the map's nearest-slice reading):
+      // the y family only where the xy and x families both hold some.
       Box2 xy;
-      for (const PolygonSet& r : res.slices)
-        if (!r.empty()) xy.merge(bounds(r));
-      if (xy.empty()) {
-        nothing_left = true;  // no residue in the xy family: none anywhere
-      } else {
-        const double m = fam.pitch_mm, kInf = std::numeric_limits<double>::infinity();
-        Box3 agreed{{xy.min.x - m, xy.min.y - m, -kInf}, {xy.max.x + m, xy.max.y + m, kInf}};
-        if (!o.region.empty()) {
-          agreed.min = {std::max(agreed.min.x, o.region.min.x),
-                        std::max(agreed.min.y, o.region.min.y), o.region.min.z};
-          agreed.max = {std::min(agreed.max.x, o.region.max.x),
-                        std::min(agreed.max.y, o.region.max.y), o.region.max.z};
+      for (std::size_t k = 0; k < res.slices.size(); ++k) {
+        if (res.slices[k].empty()) continue;
+        const Box2 b = bounds(res.slices[k]);
+        if (a == 2) {
+          xy.merge(b);
+        } else {
+          xy.add(Vec2{res.level(k), b.min.x});
+          xy.add(Vec2{res.level(k), b.max.x});
         }
-        limit = agreed;
-        nothing_left = limit.empty();
       }
+      const double m = fam.pitch_mm, kInf = std::numeric_limits<double>::infinity();
+      Box3 agreed{{xy.min.x - m, xy.min.y - m, -kInf}, {xy.max.x + m, xy.max.y + m, kInf}};
+      if (!xy.empty() && !limit.empty()) {
+        agreed.min = {std::max(agreed.min.x, limit.min.x), std::max(agreed.min.y, limit.min.y),
+                      limit.min.z};
+        agreed.max = {std::min(agreed.max.x, limit.max.x), std::min(agreed.max.y, limit.max.y),
+                      limit.max.z};
+      }
+      limit = agreed;
+      nothing_left = xy.empty() || limit.empty();  // no residue here: none agreed anywhere
     }
   }
   return out;

@@ -122,3 +122,32 @@ TEST(TriSliceRestMap, PruningByTheXyResidueChangesNothing) {
 
 }  // namespace
 }  // namespace swarf
+
+namespace swarf {
+namespace {
+
+// The y family is analysed only where the x family (and the xy family, when analysed) hold
+// residue. With the xy family off, the x family is analysed whole and its residue, at the
+// foot of a small block, limits the y family to the block's surroundings: same map and points.
+TEST(TriSliceRestMap, PruningTheYFamilyByTheXResidueChangesNothing) {
+  Mesh part = make_box(Box3{{0, 0, 0}, {40, 40, 3}});
+  append(part, make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}}));
+  auto model = build_trislice(part, 0.25);
+  ASSERT_TRUE(model.ok()) << model.status().to_string();
+  RestOptions o;
+  o.tool_radius_mm = 2.0;
+  o.families = {true, true, false};
+  auto pruned = unmachinable_regions(*model, o);
+  o.prune_by_xy_residue = false;
+  auto full = unmachinable_regions(*model, o);
+  ASSERT_TRUE(pruned.ok() && full.ok());
+  EXPECT_EQ(pruned->families[0].size(), full->families[0].size());
+  EXPECT_LT(pruned->families[1].size(), full->families[1].size() / 2);
+  const ThicknessMap a = thickness_map(*pruned, 0.25), c = thickness_map(*full, 0.25);
+  EXPECT_GT(a.max(), 0.5);
+  EXPECT_EQ(a.mm, c.mm);
+  EXPECT_EQ(residue_points_ply(*pruned, 0.25), residue_points_ply(*full, 0.25));
+}
+
+}  // namespace
+}  // namespace swarf

@@ -30,10 +30,10 @@ struct RestOptions {
   /// Arc tolerance 5 um, every neighbour (the stride comes from convolution_tolerance_mm),
   /// slices simplified to 1 um before they are offset (a twentieth of min_thickness_mm).
   ConvolutionOptions convolution{0.005, 1, 0.001};
-  /// Analyse the x and y families only over the xy family's residue (its bounds plus a
-  /// pitch): the map and the points keep only what all families agree on, so they come out
-  /// the same, sooner where the residue is local (a pocket part: half the time). false:
-  /// every slice of every family.
+  /// Analyse the x family only over the xy family's residue (its bounds plus a pitch), and
+  /// the y family only over where both hold some: the map and the points keep only what all
+  /// families agree on, so they come out the same, sooner where the residue is local (a
+  /// pocket part: half the time; the torus part -20 %). false: every slice of every family.
   bool prune_by_xy_residue = true;
   /// Normal error the closing may make between slices, mm: neighbours are read every
   /// floor(sqrt(8 r tol) / ds) slices (offset.h bound ds'^2 / (8 r) <= tol). 0 = every slice.
