@@ -35,6 +35,8 @@ kiri=examples/parts/kirimoto_pocket-test.stl
     surface "$torus" --tool ball:8 --stepover 0.5 --sampling 0.1 --pitch 0.05 -o "$out/s.nc"
   run dropcut "torus part" "exact drop-cutter, same grid" -- \
     dropcut "$torus" --tool ball:8 --stepover 0.5 --sampling 0.1 --csv "$out/d.csv"
+  run dropcut "torus part" "exact drop-cutter, bull-nose D8 r2, same grid" -- \
+    dropcut "$torus" --tool bull:8:2 --stepover 0.5 --sampling 0.1 --csv "$out/b.csv"
   run rest "torus part" "D8 ball, pitch 0.5" -- rest "$torus" --tool ball:8 --pitch 0.5
   run rest "torus part" "D8 ball, pitch 0.1 (the issue's example)" -- \
     rest "$torus" --tool ball:8 --pitch 0.1

@@ -114,20 +114,18 @@ double bull_edge(Vec3 a, Vec3 e, Vec2 p, double R, double rc, double t0, double 
     const double gp = u / root, gpp = rc * rc / (root * root * root);
     return Eval{q.z - (rc - root), e.z - gp * dd, -gpp * dd * dd - gp * ddd};
   };
-  const Eval A = eval(t0), B = eval(t1);
-  double out = std::max(A.f, B.f);
-  if (!(A.df > 0.0) || !(B.df < 0.0) || !(t1 > t0)) return out;  // an end is the maximum
-  // Tangent bound: f <= min(A.f + A.df (s - t0), B.f + B.df (s - t1)) on [t0, t1].
-  double bound;
-  if (std::isfinite(A.df) && std::isfinite(B.df)) {
-    const double s = (B.f - A.f + A.df * t0 - B.df * t1) / (A.df - B.df);
-    bound = A.f + A.df * (std::clamp(s, t0, t1) - t0);
-  } else if (std::isfinite(B.df)) {
-    bound = B.f + B.df * (t0 - t1);
-  } else if (std::isfinite(A.df)) {
-    bound = A.f + A.df * (t1 - t0);
-  } else {
-    bound = std::numeric_limits<double>::infinity();
+  const Eval first = eval(t0), last = eval(t1);
+  double out = std::max(first.f, last.f);
+  if (!(first.df > 0.0) || !(last.df < 0.0) || !(t1 > t0)) return out;  // an end is the maximum
+  // Tangent bound: f <= min(first.f + first.df (s - t0), last.f + last.df (s - t1)).
+  double bound = std::numeric_limits<double>::infinity();
+  if (std::isfinite(first.df) && std::isfinite(last.df)) {
+    const double s = (last.f - first.f + first.df * t0 - last.df * t1) / (first.df - last.df);
+    bound = first.f + first.df * (std::clamp(s, t0, t1) - t0);
+  } else if (std::isfinite(last.df)) {
+    bound = last.f + last.df * (t0 - t1);
+  } else if (std::isfinite(first.df)) {
+    bound = first.f + first.df * (t1 - t0);
   }
   if (bound <= best) return -std::numeric_limits<double>::infinity();
   double lo = t0, hi = t1, s = 0.5 * (t0 + t1);
@@ -135,7 +133,9 @@ double bull_edge(Vec3 a, Vec3 e, Vec2 p, double R, double rc, double t0, double 
   for (int it = 0; it < 100 && hi - lo > tol; ++it) {
     const Eval q = eval(s);
     out = std::max(out, q.f);
-    if (q.df == 0.0) break;
+    if (q.df == 0.0) {
+      break;
+    }
     (q.df > 0.0 ? lo : hi) = s;
     // Newton on f' (f'' < 0 where the corner holds the edge); halve the bracket otherwise.
     const double next = q.ddf < 0.0 ? s - q.df / q.ddf : lo - 1.0;

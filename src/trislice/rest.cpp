@@ -112,8 +112,8 @@ Result<RestRegions> unmachinable_regions(const TriSliceModel& model, const RestO
           xy.add(Vec2{res.level(k), b.max.x});
         }
       }
-      const double m = fam.pitch_mm, kInf = std::numeric_limits<double>::infinity();
-      Box3 agreed{{xy.min.x - m, xy.min.y - m, -kInf}, {xy.max.x + m, xy.max.y + m, kInf}};
+      const double m = fam.pitch_mm, inf = std::numeric_limits<double>::infinity();
+      Box3 agreed{{xy.min.x - m, xy.min.y - m, -inf}, {xy.max.x + m, xy.max.y + m, inf}};
       if (!xy.empty() && !limit.empty()) {
         agreed.min = {std::max(agreed.min.x, limit.min.x), std::max(agreed.min.y, limit.min.y),
                       limit.min.z};
