@@ -2,9 +2,11 @@
 // built by hand so that the answer is known exactly.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "swarf/mesh/generate.h"
 #include "swarf/trislice/model.h"
@@ -97,56 +99,53 @@ namespace swarf {
 namespace {
 
 // A block on a plate: residue only along the block's foot (a ø4 ball cannot reach into the
-// concave right angle there). The x and y families analysed only over the xy family's residue
-// give the same map and points as the full analysis.
-TEST(TriSliceRestMap, PruningByTheXyResidueChangesNothing) {
+// concave right angle there). The families analysed with and without pruning, for the checks
+// that they give the same map and points.
+struct PrunedAndFull {
+  RestRegions pruned, full;
+};
+PrunedAndFull block_on_plate_rest(std::array<bool, 3> families) {
   Mesh part = make_box(Box3{{0, 0, 0}, {40, 40, 3}});
   append(part, make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}}));
   auto model = build_trislice(part, 0.25);
-  ASSERT_TRUE(model.ok()) << model.status().to_string();
+  EXPECT_TRUE(model.ok()) << model.status().to_string();
+  if (!model.ok()) return {};
   RestOptions o;
   o.tool_radius_mm = 2.0;
+  o.families = families;
   auto pruned = unmachinable_regions(*model, o);
   o.prune_by_xy_residue = false;
   auto full = unmachinable_regions(*model, o);
-  ASSERT_TRUE(pruned.ok() && full.ok());
-  EXPECT_LT(pruned->families[0].size(), full->families[0].size() / 2);
-  const ThicknessMap a = thickness_map(*pruned, 0.25), c = thickness_map(*full, 0.25);
+  EXPECT_TRUE(pruned.ok() && full.ok());
+  if (!pruned.ok() || !full.ok()) return {};
+  return {std::move(pruned).value(), std::move(full).value()};
+}
+
+// The x and y families analysed only over the xy family's residue give the same map and
+// points as the full analysis.
+TEST(TriSliceRestMap, PruningByTheXyResidueChangesNothing) {
+  const auto [pruned, full] = block_on_plate_rest({true, true, true});
+  EXPECT_LT(pruned.families[0].size(), full.families[0].size() / 2);
+  const ThicknessMap a = thickness_map(pruned, 0.25), c = thickness_map(full, 0.25);
   EXPECT_GT(a.max(), 0.5);  // the foot of the block: about r (sqrt 2 - 1) across the corner
   EXPECT_EQ(a.mm, c.mm);
-  EXPECT_EQ(residue_points_ply(*pruned, 0.25), residue_points_ply(*full, 0.25));
+  EXPECT_EQ(residue_points_ply(pruned, 0.25), residue_points_ply(full, 0.25));
   // Nothing away from the block.
   EXPECT_EQ(a.at({5.0, 5.0}), 0.0);
   EXPECT_EQ(a.at({35.0, 20.0}), 0.0);
 }
 
-}  // namespace
-}  // namespace swarf
-
-namespace swarf {
-namespace {
-
 // The y family is analysed only where the x family (and the xy family, when analysed) hold
 // residue. With the xy family off, the x family is analysed whole and its residue, at the
-// foot of a small block, limits the y family to the block's surroundings: same map and points.
+// foot of the block, limits the y family to the block's surroundings: same map and points.
 TEST(TriSliceRestMap, PruningTheYFamilyByTheXResidueChangesNothing) {
-  Mesh part = make_box(Box3{{0, 0, 0}, {40, 40, 3}});
-  append(part, make_box(Box3{{15.2, 16.1, 0}, {24.9, 23.7, 8}}));
-  auto model = build_trislice(part, 0.25);
-  ASSERT_TRUE(model.ok()) << model.status().to_string();
-  RestOptions o;
-  o.tool_radius_mm = 2.0;
-  o.families = {true, true, false};
-  auto pruned = unmachinable_regions(*model, o);
-  o.prune_by_xy_residue = false;
-  auto full = unmachinable_regions(*model, o);
-  ASSERT_TRUE(pruned.ok() && full.ok());
-  EXPECT_EQ(pruned->families[0].size(), full->families[0].size());
-  EXPECT_LT(pruned->families[1].size(), full->families[1].size() / 2);
-  const ThicknessMap a = thickness_map(*pruned, 0.25), c = thickness_map(*full, 0.25);
+  const auto [pruned, full] = block_on_plate_rest({true, true, false});
+  EXPECT_EQ(pruned.families[0].size(), full.families[0].size());
+  EXPECT_LT(pruned.families[1].size(), full.families[1].size() / 2);
+  const ThicknessMap a = thickness_map(pruned, 0.25), c = thickness_map(full, 0.25);
   EXPECT_GT(a.max(), 0.5);
   EXPECT_EQ(a.mm, c.mm);
-  EXPECT_EQ(residue_points_ply(*pruned, 0.25), residue_points_ply(*full, 0.25));
+  EXPECT_EQ(residue_points_ply(pruned, 0.25), residue_points_ply(full, 0.25));
 }
 
 }  // namespace
