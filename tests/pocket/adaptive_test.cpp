@@ -213,6 +213,24 @@ TEST(AdaptivePocket, PassesAlongAWallSitOnOneOffset) {
   EXPECT_EQ(o.result.gouge_steps, 0);
 }
 
+// A round island 1.9 mm from the wall in the leg of an L, under a ø3 tool (from the random
+// pocket sweep of session 7): the tool comes into the wedge between wall and island, where
+// the chooser's pixel test alone let a path point 6 um into the island; every point is now
+// exactly clear of both (adaptive.cpp, push_out_of_walls).
+TEST(AdaptivePocket, WedgeBetweenAWallAndAnIslandNearerThanTheTool) {
+  Ring island;
+  for (int k = 0; k < 40; ++k)
+    island.push_back(Vec2{20.0, 4.24} +
+                     Vec2{std::cos(kPi * k / 20), std::sin(kPi * k / 20)} * 2.34);
+  const Pocket p =
+      make_pocket({{0, 0}, {28.29, 0}, {28.29, 8.61}, {8.61, 8.61}, {8.61, 28.29}, {0, 28.29}},
+                  {island}, "L with an island 1.9 mm from a wall")
+          .value();
+  const Outcome o = run(p, 3.0, 0.3);
+  expect_correct(p, o, 0.82, 0.91);
+  EXPECT_EQ(o.result.gouge_steps, 0);
+}
+
 TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   Pocket narrow = make_pocket({{0, 0}, {40, 0}, {40, 5}, {0, 5}}, {}, "narrow").value();
   Tool t;
