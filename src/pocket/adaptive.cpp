@@ -10,6 +10,7 @@
 #include "pocket/adaptive_internal.h"
 #include "pocket/distance_transform.h"
 #include "pocket/geometry.h"
+#include "swarf/polygon/polygon.h"
 
 namespace swarf {
 
@@ -134,6 +135,83 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
     else if (d < reach - 1e-9)
       push_out_of_walls(m, p, on);
   }
+}
+
+// Tips of the region of tool centres (our addition). Where two walls meet at a corner under
+// 180 degrees, or a wall and an island come nearer than the tool, the region the tool
+// centre may occupy ends in a sharp tip, and the tool only clears the material near the
+// corner from the tip itself. The chooser's pixel model keeps half a pixel off each wall,
+// which moves the tip back by half a pixel / sin(half the tip angle): 0.3 mm in a 30 degree
+// wedge at a 0.15 mm pixel, and the disk left a crescent of 5-10 mm^2 there (random pocket
+// sweep). The exact tips are the sharp convex vertices of the pocket shrunk by the tool
+// radius, wall stock and kWallClearanceMm; the path point nearest to a tip it does not
+// reach, if within kTipReachPx pixels and with a straight way there clear of the walls,
+// gets a short visit to the tip and back.
+constexpr double kTipReachPx = 8.0;
+
+void reach_into_tips(const Model& m, LinkedPath& lp) {
+  const double on = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
+  const double reach = m.radius_mm + m.wall_stock_mm;
+  const PolygonSet centres = offset(m.region, -on);
+  std::vector<Vec2> tips;
+  for (const Ring& r : centres.rings)
+    for (std::size_t k = 0, n = r.size(); k < n; ++k) {
+      const Vec2 a = r[(k + n - 1) % n], b = r[k], c = r[(k + 1) % n];
+      const Vec2 u = b - a, v = c - b;
+      // Interior on the left: a left turn of more than 20 degrees is a sharp convex corner
+      // (the round joins of the offset turn by a few degrees per vertex).
+      if (cross(u, v) > 0.0 && std::atan2(cross(u, v), dot(u, v)) > deg_to_rad(20.0))
+        tips.push_back(b);
+    }
+  if (tips.empty() || lp.pts.size() < 2) return;
+  const double near = kTipReachPx * m.h;
+  // Per path point, the tips it visits (in the order found).
+  std::vector<std::vector<Vec2>> visits(lp.pts.size());
+  bool any = false;
+  for (Vec2 t : tips) {
+    double best = 1e300, reached = 1e300;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < lp.pts.size(); ++k) {
+      const double d = distance(lp.pts[k], t);
+      if (d < best && (k + 1 >= lp.pts.size() || !lp.jump[k] || k == 0 || !lp.jump[k - 1])) {
+        best = d;
+        at = k;
+      }
+      if (k + 1 < lp.pts.size() && !lp.jump[k])
+        reached = std::min(reached, pocket::point_segment_distance(t, lp.pts[k], lp.pts[k + 1]));
+    }
+    if (reached < 0.05 * m.h || best > near) continue;
+    if (pocket::distance_to_rings(m.region, t) < reach - 1e-9 ||
+        !pocket::point_in_region(m.region, t) ||
+        pocket::segment_distance_to_rings(m.region, lp.pts[at], t) < reach - 1e-7)
+      continue;
+    visits[at].push_back(t);
+    any = true;
+  }
+  if (!any) return;
+  LinkedPath out = lp;
+  out.pts.clear();
+  out.kind.clear();
+  out.jump.clear();
+  out.entry.clear();
+  for (std::size_t k = 0; k < lp.pts.size(); ++k) {
+    out.pts.push_back(lp.pts[k]);
+    for (Vec2 t : visits[k]) {
+      out.pts.push_back(t);
+      out.pts.push_back(lp.pts[k]);
+      for (int q = 0; q < 2; ++q) {
+        out.kind.push_back(StepKind::kCut);
+        out.jump.push_back(false);
+        out.entry.push_back(-1);
+      }
+    }
+    if (k + 1 < lp.pts.size()) {
+      out.kind.push_back(lp.kind[k]);
+      out.jump.push_back(lp.jump[k]);
+      out.entry.push_back(lp.entry[k]);
+    }
+  }
+  lp = std::move(out);
 }
 
 // A tool position whose disk reaches past a wall or into an island, by exact geometry (the
@@ -263,9 +341,12 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
     tp.moves.push_back(make_move(MoveKind::kRamp, to_vec3(at_a ? e.ramp_a : e.ramp_b, z),
                                  p.plunge_feed_mm_min, true));
   }
+  // The ramp's last pass at depth, back along it, takes the wedge the last descent left on
+  // the floor: part of the entry (the material is the ramp's own, at most its length x
+  // tan(ramp angle) thick), not a cut at full depth.
   if (at_a)
     tp.moves.push_back(
-        make_move(MoveKind::kFeed, to_vec3(e.ramp_b, z_to), p.plunge_feed_mm_min, true));
+        make_move(MoveKind::kRamp, to_vec3(e.ramp_b, z_to), p.plunge_feed_mm_min, true));
 }
 
 }  // namespace
@@ -279,7 +360,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const Model& m = model.value();
   // Candidates for the start, and spare entries for parts of the pocket behind necks
   // narrower than the tool.
-  auto entries = pocket::find_entries(m, params, std::max(params.plunge_candidates, 16));
+  auto entries = pocket::find_entries(m, std::max(params.plunge_candidates, 16));
   if (!entries) return entries.status();
   pocket::LinkCosts costs;
   costs.feed_mm_min = params.feed_mm_min;
@@ -305,6 +386,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     if (!raw) return raw.status();
     paths.push_back(pocket::postprocess(m, order, raw.value(), costs));
     snap_to_wall_offset(m, paths.back());
+    reach_into_tips(m, paths.back());
     orders.push_back(std::move(order));
     const double t = path_time_s(paths.back(), params);
     if (t < best_time) {

@@ -27,6 +27,7 @@ struct Model {
   /// +1: material on the left (the paper's scan order); -1: mirrored, for climb milling.
   int sigma = -1;
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
+  double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
   PolygonSet region;               ///< the pocket (outer ring, islands), exact
   double wall_stock_mm = 0.0;      ///< left on walls and islands
   double pocket_area_mm2 = 0.0;
@@ -49,8 +50,15 @@ struct Entry {
 
 /// Up to `count` entries at maxima of the medial axis, best (widest) first.
 /// kToolTooLarge / kNoEntryFound when there is none.
-Result<std::vector<Entry>> find_entries(const Model& model, const AdaptiveParams& params,
-                                        int count);
+Result<std::vector<Entry>> find_entries(const Model& model, int count);
+/// The medial-axis pixels (indices into the grid) at least min_clearance_px from every
+/// forbidden pixel, widest first.
+std::vector<int> entry_axis(const Model& model, double min_clearance_px);
+/// An entry for material the cleared area cannot lead to: the medial-axis pixel whose disk
+/// holds the most of `stock`'s material (at least min_px) among those where a helix or a
+/// ramp fits. False when there is none.
+bool find_entry_for_material(const Model& model, const PixelStock& stock,
+                             const std::vector<int>& axis, int min_px, Entry& entry);
 /// Clears the entry hole or slot in the stock.
 void cut_entry(PixelStock& stock, const Model& model, const Entry& entry,
                CutVisitor visit = nullptr, void* user = nullptr);
@@ -70,8 +78,9 @@ struct RawPath {
 /// `entries`: the first is where the path starts; the others are used, in order, for parts
 /// of the pocket the tool cannot reach from the cleared area (beyond a neck narrower than
 /// the tool) once nothing else is left.
+/// Entries made on the way (find_entry_for_material) are appended to `entries`.
 Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock,
-                                  const std::vector<Entry>& entries, const Context& ctx);
+                                  std::vector<Entry>& entries, const Context& ctx);
 
 /// The linked path: points and per segment its kind; `jump[i]` marks a segment travelled
 /// by retracting, moving at the clearance plane and coming down again.

@@ -55,6 +55,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.cut_px = std::max(2.0, 0.04 * m.target_px);
   m.theta_max_deg = static_cast<int>(std::lround(p.max_deviation_deg));
   m.sigma = p.climb ? -1 : 1;
+  m.want_helix_mm = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
 
   Box2 box;
   for (const Ring& ring : pocket.region.rings)
@@ -128,12 +129,64 @@ PixelStock fresh_stock(const Model& m) {
   return PixelStock(m.grid, m.material, m.forbidden, m.radius_mm, &m.clearance_sq);
 }
 
-Result<std::vector<Entry>> find_entries(const Model& m, const AdaptiveParams& p, int count) {
+namespace {
+
+// The entry at the medial-axis pixel idx: a helix where one of at least min_helix fits,
+// else a ramp along the longest straight line of free centres through it (5 degree
+// directions); false when neither fits.
+bool entry_at(const Model& m, int idx, Entry& e) {
   const double r = m.radius_mm;
-  const double r_px = r / m.h;
-  // Medial axis pixels whose disk fits (seed 000 Fig. 3).
-  const auto axis = medial_axis(m.clearance_sq, m.grid.width, m.grid.height, r_px + 1.0);
-  if (axis.empty()) {
+  const double min_helix = std::max(2.0 * m.h, 0.1 * r);
+  const int i = idx % m.grid.width, j = idx / m.grid.width;
+  const Vec2 c = m.grid.to_world(i, j);
+  const double room = clearance_mm(m, i, j) - r - m.h;  // helix radius that fits
+  e = Entry{};
+  e.centre = c;
+  if (room >= min_helix) {
+    e.helix_radius_mm = std::min(m.want_helix_mm, room);
+    e.start = c + Vec2{e.helix_radius_mm, 0.0};
+    // Moving counter-clockwise round the hole keeps the material on the right (climb).
+    e.start_angle_rad = m.sigma < 0 ? kPi / 2 : -kPi / 2;
+    return true;
+  }
+  double best_len = 0.0;
+  Vec2 ba, bb;
+  for (int deg = 0; deg < 180; deg += 5) {
+    const Vec2 d{std::cos(deg_to_rad(deg)), std::sin(deg_to_rad(deg))};
+    double t0 = 0.0, t1 = 0.0;
+    while (t1 < 4.0 * r && clearance_at(m, c + d * (t1 + m.h)) > r)
+      t1 += m.h;
+    while (t0 < 4.0 * r && clearance_at(m, c - d * (t0 + m.h)) > r)
+      t0 += m.h;
+    if (t0 + t1 > best_len) {
+      best_len = t0 + t1;
+      ba = c - d * t0;
+      bb = c + d * t1;
+    }
+  }
+  if (best_len < min_helix) return false;
+  e.ramp_a = ba;
+  e.ramp_b = bb;
+  e.start = bb;
+  e.start_angle_rad = std::atan2(bb.y - ba.y, bb.x - ba.x);
+  return true;
+}
+
+}  // namespace
+
+std::vector<int> entry_axis(const Model& m, double min_clearance_px) {
+  // Medial axis pixels whose disk fits (seed 000 Fig. 3), widest first.
+  std::vector<int> axis =
+      medial_axis(m.clearance_sq, m.grid.width, m.grid.height, min_clearance_px);
+  std::stable_sort(axis.begin(), axis.end(),
+                   [&](int a, int b) { return m.clearance_sq[a] > m.clearance_sq[b]; });
+  return axis;
+}
+
+Result<std::vector<Entry>> find_entries(const Model& m, int count) {
+  const double r = m.radius_mm;
+  const std::vector<int> order = entry_axis(m, m.radius_mm / m.h + 1.0);
+  if (order.empty()) {
     double best = 0.0;
     for (float v : m.clearance_sq)
       best = std::max(best, static_cast<double>(v));
@@ -141,58 +194,22 @@ Result<std::vector<Entry>> find_entries(const Model& m, const AdaptiveParams& p,
                   "the " + mm(2 * r) + " tool fits nowhere in the pocket (widest point " +
                       mm(2 * std::sqrt(best) * m.h) + " across, wall stock included)");
   }
-  std::vector<int> order(axis);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return m.clearance_sq[a] > m.clearance_sq[b]; });
-  const double want_helix = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
-  const double min_helix = std::max(2.0 * m.h, 0.1 * r);
   std::vector<Entry> out;
   std::vector<Vec2> chosen;
   for (int idx : order) {
     if (static_cast<int>(out.size()) >= count) break;
-    const int i = idx % m.grid.width, j = idx / m.grid.width;
-    const Vec2 c = m.grid.to_world(i, j);
-    const double room = clearance_mm(m, i, j) - r - m.h;  // helix radius that fits
+    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
     bool far = true;
     for (Vec2 q : chosen)
-      far = far && distance(q, c) > 2.0 * r + 2.0 * want_helix;
+      far = far && distance(q, c) > 2.0 * r + 2.0 * m.want_helix_mm;
     if (!far) continue;
     Entry e;
-    e.centre = c;
-    if (room >= min_helix) {
-      e.helix_radius_mm = std::min(want_helix, room);
-      e.start = c + Vec2{e.helix_radius_mm, 0.0};
-      // Moving counter-clockwise round the hole keeps the material on the right (climb).
-      e.start_angle_rad = m.sigma < 0 ? kPi / 2 : -kPi / 2;
-    } else {
-      // Ramp: the longest straight line of free centres through c (5 degree directions).
-      double best_len = 0.0;
-      Vec2 ba, bb;
-      for (int deg = 0; deg < 180; deg += 5) {
-        const Vec2 d{std::cos(deg_to_rad(deg)), std::sin(deg_to_rad(deg))};
-        double t0 = 0.0, t1 = 0.0;
-        while (t1 < 4.0 * r && clearance_at(m, c + d * (t1 + m.h)) > r)
-          t1 += m.h;
-        while (t0 < 4.0 * r && clearance_at(m, c - d * (t0 + m.h)) > r)
-          t0 += m.h;
-        if (t0 + t1 > best_len) {
-          best_len = t0 + t1;
-          ba = c - d * t0;
-          bb = c + d * t1;
-        }
-      }
-      if (best_len < min_helix) continue;
-      e.ramp_a = ba;
-      e.ramp_b = bb;
-      e.start = bb;
-      e.start_angle_rad = std::atan2(bb.y - ba.y, bb.x - ba.x);
-    }
+    if (!entry_at(m, idx, e)) continue;
     chosen.push_back(c);
     out.push_back(e);
   }
   if (out.empty()) {
-    const int i = order.front() % m.grid.width, j = order.front() / m.grid.width;
-    const Vec2 c = m.grid.to_world(i, j);
+    const Vec2 c = m.grid.to_world(order.front() % m.grid.width, order.front() / m.grid.width);
     char b[96];
     std::snprintf(b, sizeof b, "(%.3f, %.3f)", c.x, c.y);
     return Status(Error::kNoEntryFound, "the tool fits at " + std::string(b) +
@@ -200,6 +217,32 @@ Result<std::vector<Entry>> find_entries(const Model& m, const AdaptiveParams& p,
                                             mm(std::max(2.0 * m.h, 0.1 * r)) + " of free travel)");
   }
   return out;
+}
+
+bool find_entry_for_material(const Model& m, const PixelStock& stock, const std::vector<int>& axis,
+                             int min_px, Entry& e) {
+  const double r = m.radius_mm;
+  int best_px = min_px - 1, best_idx = -1;
+  for (int idx : axis) {
+    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
+    // A ramp reaches at most 4 R either way.
+    if (stock.material_in_disk(c, 5.0 * r, 0) == 0) continue;
+    Entry cand;
+    if (!entry_at(m, idx, cand)) continue;
+    // What the entry takes: the helix's hole, or the most of the disks at the ramp's ends
+    // and middle (a ramp runs along a wedge into its tip, where the material is).
+    const int px =
+        cand.helix_radius_mm > 0.0
+            ? stock.material_in_disk(c, r + cand.helix_radius_mm)
+            : std::max({stock.material_in_disk(cand.ramp_a, r),
+                        stock.material_in_disk(cand.ramp_b, r), stock.material_in_disk(c, r)});
+    if (px > best_px) {
+      best_px = px;
+      best_idx = idx;
+      e = cand;
+    }
+  }
+  return best_idx >= 0;
 }
 
 void cut_entry(PixelStock& stock, const Model& m, const Entry& e, CutVisitor visit, void* user) {

@@ -226,13 +226,16 @@ namespace {
 
 // Where to resume after the boundary round ended with reachable material left (our
 // addition: the paper stops, which leaves material behind islands or beyond a narrow
-// neck). Tries the remaining material pixels nearest to `from`; a resume point is a free,
-// already cleared centre just out of reach of the pixel, facing it. Pixels for which no
-// such point exists are dropped from `stock` (so the search terminates).
-bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
-                 int& pj, double window_mm = 0.0) {
+// neck). Tries the remaining material pixels nearest to `from` that are not in `given_up`;
+// a resume point is a free, already cleared centre just out of reach of the pixel, facing
+// it. Pixels for which no such point exists are added to `given_up` (so the search
+// terminates). They stay material: a path that passes them still sees and cuts them (when
+// they were taken out of the stock instead, a later pass went through them as if through
+// cleared space, and the final path, re-simulated, cut them in a full slot).
+bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
+                 int& pj, BitImage& given_up, double window_mm = 0.0) {
   const BitImage& mat = stock.material();
-  // A window (> 0) limits the search to material near `from` and drops nothing.
+  // A window (> 0) limits the search to material near `from`.
   int wi0 = 0, wi1 = mat.width() - 1, wj0 = 0, wj1 = mat.height() - 1;
   if (window_mm > 0.0) {
     const Vec2 c = m.grid.to_px(from);
@@ -247,17 +250,25 @@ bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& d
     double d2;
     int i, j;
   };
-  for (int round = 0; round < 16; ++round) {
+  // Without a window the rounds go on (trying twice as many pixels each round, up to 4096)
+  // until a resume is found or too little is left: with a fixed 16 rounds of the 64
+  // nearest pixels, a wedge the tool cannot finish near `from` used them all up and the
+  // material farther away was never tried (the random pocket sweep found 200 mm^2 left
+  // that way).
+  const int rounds = window_mm > 0.0 ? 16 : 1 << 30;
+  for (int round = 0; round < rounds; ++round) {
     std::vector<Px> px;
     // In a window, every third pixel each way is plenty to find the nearest material.
     const int lattice = window_mm > 0.0 ? 3 : 1;
     for (int j = wj0; j <= wj1; j += lattice) {
       if (mat.count(j, wi0, wi1) == 0) continue;
       for (int i = wi0; i <= wi1; i += lattice)
-        if (mat.get(i, j)) px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
+        if (mat.get(i, j) && !given_up.get(i, j))
+          px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
     }
     if (static_cast<double>(px.size()) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm) return false;
-    const std::size_t tries = std::min<std::size_t>(px.size(), window_mm > 0.0 ? 12 : 64);
+    const std::size_t tries = std::min<std::size_t>(
+        px.size(), window_mm > 0.0 ? 12 : std::size_t{64} << std::min(round, 6));
     std::partial_sort(px.begin(), px.begin() + static_cast<std::ptrdiff_t>(tries), px.end(),
                       [](const Px& a, const Px& b) {
                         return a.d2 != b.d2 ? a.d2 < b.d2 : (a.j != b.j ? a.j < b.j : a.i < b.i);
@@ -277,18 +288,56 @@ bool find_resume(const Model& m, PixelStock& stock, Vec2 from, Vec2& at, Vec2& d
       }
     }
     for (std::size_t k = 0; k < tries; ++k)
-      stock.drop_pixel(px[k].i, px[k].j);
+      given_up.set(px[k].i, px[k].j, true);
   }
   return false;
 }
 
 }  // namespace
 
-Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
-                                  const std::vector<Entry>& entries, const Context& ctx) {
-  const Entry& entry = entries.front();
+Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector<Entry>& entries,
+                                  const Context& ctx) {
+  const Entry entry = entries.front();
   std::vector<bool> used(entries.size(), false);
   used[0] = true;
+  // Material given up on (no resume point reaches it); tried again from a new entry once
+  // nothing else is left.
+  BitImage given_up(m.grid.width, m.grid.height);
+  auto drop = [&](int i, int j) { given_up.set(i, j, true); };
+  std::vector<int> axis;  // medial axis, computed when first needed
+  // A new entry must take at least one straight step's worth of material to be worth its
+  // retract and helix.
+  const int entry_min_px = std::max(1, static_cast<int>(std::ceil(m.target_px)));
+  // The contact arc of a move: front half of a circle just outside the tool (the tool's
+  // own disk at `at` is cleared), two degrees apart.
+  constexpr double kSlotDeg = 170.0;
+  const double ring_px = (m.radius_mm + 0.5 * m.h) / m.h;
+  auto front_arc_deg = [&](Vec2 at, Vec2 d) {
+    const Vec2 q = m.grid.to_px(at);
+    const double base = std::atan2(d.y, d.x);
+    int n = 0;
+    for (int k = -89; k <= 89; k += 2) {
+      const double a = base + deg_to_rad(k);
+      const int i = static_cast<int>(std::lround(q.x + ring_px * std::cos(a)));
+      const int j = static_cast<int>(std::lround(q.y + ring_px * std::sin(a)));
+      if (i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height && stock.material().get(i, j))
+        ++n;
+    }
+    return 2.0 * n;
+  };
+  auto drop_disk = [&](Vec2 c) {
+    const Vec2 q = m.grid.to_px(c);
+    const double r = m.radius_mm / m.h;
+    const int j0 = std::max(0, static_cast<int>(std::ceil(q.y - r)));
+    const int j1 = std::min(m.grid.height - 1, static_cast<int>(std::floor(q.y + r)));
+    for (int j = j0; j <= j1; ++j) {
+      const double half = std::sqrt(std::max(0.0, r * r - (j - q.y) * (j - q.y)));
+      const int i0 = std::max(0, static_cast<int>(std::ceil(q.x - half)));
+      const int i1 = std::min(m.grid.width - 1, static_cast<int>(std::floor(q.x + half)));
+      for (int i = i0; i <= i1; ++i)
+        if (stock.material().get(i, j)) drop(i, j);
+    }
+  };
   RawPath raw;
   Chooser chooser(m, stock);
   Vec2 pos = entry.start;
@@ -349,6 +398,16 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
         kind = StepKind::kLink;
         if (c.eng < 0) break;
       }
+      // Our addition: no full slot outside an entry. A move whose contact arc reaches
+      // kSlotDeg is not taken: it goes into the tip of a wedge narrower than the tool
+      // (between an island and a wall, or two walls), where every way in has material on
+      // both sides. The session ends there and what the move would have cut is given up
+      // for now, to be taken from a new entry (find_entry_for_material below) once nothing
+      // else is left.
+      if (front_arc_deg(pos, c.p - pos) >= kSlotDeg) {
+        drop_disk(c.p);
+        break;
+      }
       const int removed = stock.cut(pos, c.p);
       raw.eng.push_back(removed);
       raw.kind.push_back(kind);
@@ -369,14 +428,15 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
       if (idle_mm > next_shortcut_mm) {
         next_shortcut_mm = idle_mm + shortcut_mm;
         // A shortcut that led to no cutting: give up on that pixel, go on following.
-        if (shortcut_pending && !cut_since_shortcut) stock.drop_pixel(short_i, short_j);
+        if (shortcut_pending && !cut_since_shortcut) drop(short_i, short_j);
         shortcut_pending = false;
         std::size_t tail = raw.eng.size();
         while (tail > 0 && raw.eng[tail - 1] <= m.cut_px && !raw.jump[tail - 1])
           --tail;
         Vec2 at, d;
         int si = 0, sj = 0;
-        if (tail > 0 && find_resume(m, stock, raw.pts[tail], at, d, si, sj, 1.5 * shortcut_mm)) {
+        if (tail > 0 &&
+            find_resume(m, stock, raw.pts[tail], at, d, si, sj, given_up, 1.5 * shortcut_mm)) {
           shortcut_pending = true;
           cut_since_shortcut = false;
           short_i = si;
@@ -399,8 +459,12 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
         }
       }
     }
-    // Drop the idle tail: it only proved there is nothing left within reach.
-    while (!raw.eng.empty() && raw.eng.back() <= m.cut_px) {
+    // Drop the idle tail: it only proved there is nothing left within reach. A new entry
+    // stays even when its session cut nothing more: its helix or ramp has cut the stock,
+    // and the moves after it were chosen on that stock (dropped, the final path met the
+    // ramp's material uncut, in a full slot).
+    while (!raw.eng.empty() && raw.eng.back() <= m.cut_px &&
+           !(raw.jump.back() && raw.entry.back() >= 0)) {
       raw.eng.pop_back();
       raw.kind.pop_back();
       raw.jump.pop_back();
@@ -409,17 +473,32 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock,
     }
     pos = raw.pts.back();
     if (raw.eng.size() >= max_steps || iterations >= max_steps) break;
-    if (resumed && raw.eng.size() <= before_session) stock.drop_pixel(last_i, last_j);
+    if (resumed && raw.eng.size() <= before_session) drop(last_i, last_j);
     Vec2 at, d;
     int new_entry = -1;
-    if (!find_resume(m, stock, pos, at, d, last_i, last_j)) {
+    if (!find_resume(m, stock, pos, at, d, last_i, last_j, given_up)) {
       // Nothing reachable from the cleared area: enter anew where the stock is untouched
       // (seed 000 4.1's several plunge holes), at the widest unused medial-axis point.
       const double full = kPi * m.radius_mm * m.radius_mm / (m.h * m.h);
       for (std::size_t k = 1; k < entries.size() && new_entry < 0; ++k)
         if (!used[k] && stock.material_in_disk(entries[k].centre, m.radius_mm) > 0.9 * full)
           new_entry = static_cast<int>(k);
-      if (new_entry < 0) break;
+      if (new_entry < 0) {
+        // Our addition: material no resume point reaches and no entry above covers: behind
+        // a neck whose own region has no medial-axis maximum among the entries, or where
+        // every centre near it still has material in its disk (the corner of a wedge whose
+        // tip is narrower than the tool). The material given up on is tried again: the tool
+        // enters anew where its disk takes the most of what is left (the random pocket
+        // sweep left up to 226 mm^2 behind before this). Each such entry clears its disk, so
+        // the material strictly shrinks.
+        given_up = BitImage(m.grid.width, m.grid.height);
+        if (axis.empty()) axis = entry_axis(m, m.radius_mm / m.h + 0.75);
+        Entry e;
+        if (!find_entry_for_material(m, stock, axis, entry_min_px, e)) break;
+        entries.push_back(e);
+        used.push_back(false);
+        new_entry = static_cast<int>(entries.size()) - 1;
+      }
       used[static_cast<std::size_t>(new_entry)] = true;
       const Entry& e = entries[static_cast<std::size_t>(new_entry)];
       cut_entry(stock, m, e);

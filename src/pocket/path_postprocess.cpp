@@ -236,13 +236,24 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
   PixelStock stock = fresh_stock(m);
   cut_entry(stock, m, entry);
   out.pts.push_back(raw.pts.front());
+  // Raw moves as they are; a jump among them stays a jump (a retract, or a new entry), not a
+  // straight move at depth: a region that holds a new entry and, after it, another jump
+  // (the entry's own session cut nothing) had its later jump turned into a move through
+  // uncut material, a slot in the final path.
   auto append_raw = [&](std::size_t first, std::size_t last, bool link) {
     for (std::size_t k = first; k < last; ++k) {
-      stock.cut(raw.pts[k], raw.pts[k + 1]);
+      if (raw.jump[k]) {
+        if (raw.entry[k] >= 0)
+          cut_entry(stock, m, entries[static_cast<std::size_t>(raw.entry[k])]);
+        else
+          stock.stamp(raw.pts[k + 1]);
+      } else {
+        stock.cut(raw.pts[k], raw.pts[k + 1]);
+      }
       out.pts.push_back(raw.pts[k + 1]);
-      out.kind.push_back(link ? StepKind::kLink : raw.kind[k]);
-      out.jump.push_back(false);
-      out.entry.push_back(-1);
+      out.kind.push_back(link || raw.jump[k] ? StepKind::kLink : raw.kind[k]);
+      out.jump.push_back(raw.jump[k]);
+      out.entry.push_back(raw.jump[k] ? raw.entry[k] : -1);
     }
   };
   std::vector<std::pair<std::size_t, std::size_t>> joins;  // out point index ranges to smooth

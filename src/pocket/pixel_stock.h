@@ -150,8 +150,6 @@ class PixelStock {
   /// some value above it), e.g. 0 to ask "is there any?".
   int material_in_disk(Vec2 centre, double radius_mm, int enough = kNoLimit) const;
   int stamp(Vec2 centre, CutVisitor visit = nullptr, void* user = nullptr);
-  /// Gives up on one material pixel (the move chooser found no way to reach it).
-  void drop_pixel(int i, int j) { material_.set(i, j, false); }
 
  private:
   template <class RowFn>
