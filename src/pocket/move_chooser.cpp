@@ -308,22 +308,26 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   // A new entry must take at least one straight step's worth of material to be worth its
   // retract and helix.
   const int entry_min_px = std::max(1, static_cast<int>(std::ceil(m.target_px)));
-  // The contact arc of a move: front half of a circle just outside the tool (the tool's
-  // own disk at `at` is cleared), two degrees apart.
+  // Whether a move's contact arc reaches kSlotDeg: the front half of a circle just outside
+  // the tool (whose own disk at `at` is cleared) sampled every two degrees, from the sides
+  // inwards, stopping as soon as enough samples miss the material (most moves: a few).
   constexpr double kSlotDeg = 170.0;
+  constexpr int kSamples = 90, kMayMiss = kSamples - static_cast<int>(kSlotDeg / 2.0);
   const double ring_px = (m.radius_mm + 0.5 * m.h) / m.h;
-  auto front_arc_deg = [&](Vec2 at, Vec2 d) {
+  auto slot_like = [&](Vec2 at, Vec2 d) {
     const Vec2 q = m.grid.to_px(at);
     const double base = std::atan2(d.y, d.x);
-    int n = 0;
-    for (int k = -89; k <= 89; k += 2) {
+    int missed = 0;
+    for (int s = 0; s < kSamples; ++s) {
+      const int k = (s % 2 == 0 ? -1 : 1) * (89 - 2 * (s / 2));  // -89, 89, -87, 87, ...
       const double a = base + deg_to_rad(k);
       const int i = static_cast<int>(std::lround(q.x + ring_px * std::cos(a)));
       const int j = static_cast<int>(std::lround(q.y + ring_px * std::sin(a)));
-      if (i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height && stock.material().get(i, j))
-        ++n;
+      const bool hit =
+          i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height && stock.material().get(i, j);
+      if (!hit && ++missed > kMayMiss) return false;
     }
-    return 2.0 * n;
+    return true;
   };
   auto drop_disk = [&](Vec2 c) {
     const Vec2 q = m.grid.to_px(c);
@@ -404,7 +408,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       // both sides. The session ends there and what the move would have cut is given up
       // for now, to be taken from a new entry (find_entry_for_material below) once nothing
       // else is left.
-      if (front_arc_deg(pos, c.p - pos) >= kSlotDeg) {
+      if (slot_like(pos, c.p - pos)) {
         drop_disk(c.p);
         break;
       }
