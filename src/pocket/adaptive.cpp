@@ -301,6 +301,13 @@ Move make_move(MoveKind kind, Vec3 end, double feed, bool cutting) {
 void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z_from,
                  double z_to) {
   const double tan_a = std::tan(deg_to_rad(p.ramp_angle_deg));
+  if (e.plunge) {
+    tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.start, p.clearance_z_mm), 0, false));
+    tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.start, z_from), 0, false));
+    tp.moves.push_back(
+        make_move(MoveKind::kPlunge, to_vec3(e.start, z_to), p.plunge_feed_mm_min, true));
+    return;
+  }
   if (e.helix_radius_mm > 0.0) {
     const Vec2 s = e.start;
     tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(s, p.clearance_z_mm), 0, false));
@@ -450,7 +457,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
     const double z_prev = layer == 1 ? params.top_z_mm : params.top_z_mm - sd * (layer - 1);
     entry_moves(tp, e, params, z_prev + 1.0, z);
-    Vec2 at = e.helix_radius_mm > 0.0 ? e.start : e.ramp_b;
+    Vec2 at = e.helix_radius_mm > 0.0 || e.plunge ? e.start : e.ramp_b;
     if (distance(at, lp.pts.front()) > 1e-9)
       tp.moves.push_back(
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));

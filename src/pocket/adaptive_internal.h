@@ -46,6 +46,9 @@ struct Entry {
   Vec2 ramp_a, ramp_b;           ///< ramp segment (tool centre), when a ramp
   Vec2 start;                    ///< where the adaptive moves begin
   double start_angle_rad = 0.0;  ///< their first direction
+  /// Straight down at the plunge feed, no helix or ramp: only for a new entry where the
+  /// inner half of the tool's disk is over cleared floor (the end teeth near the rim cut).
+  bool plunge = false;
 };
 
 /// Up to `count` entries at maxima of the medial axis, best (widest) first.
@@ -54,9 +57,9 @@ Result<std::vector<Entry>> find_entries(const Model& model, int count);
 /// The medial-axis pixels (indices into the grid) at least min_clearance_px from every
 /// forbidden pixel, widest first.
 std::vector<int> entry_axis(const Model& model, double min_clearance_px);
-/// An entry for material the cleared area cannot lead to: the medial-axis pixel whose disk
-/// holds the most of `stock`'s material (at least min_px) among those where a helix or a
-/// ramp fits. False when there is none.
+/// An entry for material the cleared area cannot lead to: a plunge where the disk holds the
+/// most of `stock`'s material (at least min_px) over a cleared inner half, else the
+/// medial-axis pixel whose helix or ramp takes the most. False when there is none.
 bool find_entry_for_material(const Model& model, const PixelStock& stock,
                              const std::vector<int>& axis, int min_px, Entry& entry);
 /// Clears the entry hole or slot in the stock.

@@ -222,7 +222,40 @@ Result<std::vector<Entry>> find_entries(const Model& m, int count) {
 bool find_entry_for_material(const Model& m, const PixelStock& stock, const std::vector<int>& axis,
                              int min_px, Entry& e) {
   const double r = m.radius_mm;
-  int best_px = min_px - 1, best_idx = -1;
+  // A plunge first: where the inner half of the disk is already cleared, going straight
+  // down only loads the end teeth near the rim, and costs a retract and a plunge instead
+  // of a helix from the top (the material given up on is mostly the skin of a wedge or a
+  // corner next to cleared floor).
+  int best_px = min_px - 1;
+  bool found = false;
+  for (int idx : axis) {
+    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
+    if (stock.material_in_disk(c, 0.5 * r, 0) > 0) continue;
+    const int px = stock.material_in_disk(c, r);
+    if (px > best_px) {
+      best_px = px;
+      e = Entry{};
+      e.centre = c;
+      e.start = c;
+      e.plunge = true;
+      found = true;
+    }
+  }
+  if (found) {
+    // Start towards the material: the mean direction of its pixels in the disk.
+    const Vec2 q = m.grid.to_px(e.centre);
+    const double rp = r / m.h;
+    Vec2 sum{0.0, 0.0};
+    for (int j = std::max(0, static_cast<int>(q.y - rp));
+         j <= std::min(m.grid.height - 1, static_cast<int>(q.y + rp) + 1); ++j)
+      for (int i = std::max(0, static_cast<int>(q.x - rp));
+           i <= std::min(m.grid.width - 1, static_cast<int>(q.x + rp) + 1); ++i)
+        if (stock.material().get(i, j) && norm_sq(Vec2{i - q.x, j - q.y}) <= rp * rp)
+          sum = sum + normalized(Vec2{i - q.x, j - q.y + 1e-12});
+    e.start_angle_rad = std::atan2(sum.y, sum.x);
+    return true;
+  }
+  best_px = min_px - 1;
   for (int idx : axis) {
     const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
     // A ramp reaches at most 4 R either way.
@@ -238,14 +271,18 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
                         stock.material_in_disk(cand.ramp_b, r), stock.material_in_disk(c, r)});
     if (px > best_px) {
       best_px = px;
-      best_idx = idx;
+      found = true;
       e = cand;
     }
   }
-  return best_idx >= 0;
+  return found;
 }
 
 void cut_entry(PixelStock& stock, const Model& m, const Entry& e, CutVisitor visit, void* user) {
+  if (e.plunge) {
+    stock.stamp(e.centre, visit, user);
+    return;
+  }
   if (e.helix_radius_mm > 0.0) {
     stock.stamp(e.centre, visit, user);
     const int n = std::max(8, static_cast<int>(std::ceil(2 * kPi * e.helix_radius_mm / m.h)));
