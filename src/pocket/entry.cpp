@@ -131,6 +131,11 @@ PixelStock fresh_stock(const Model& m) {
 
 namespace {
 
+Vec2 axis_point(const Model& m, int idx) {
+  const int i = idx % m.grid.width, j = idx / m.grid.width;
+  return m.grid.to_world(i, j);
+}
+
 // The entry at the medial-axis pixel idx: a helix where one of at least min_helix fits,
 // else a ramp along the longest straight line of free centres through it (5 degree
 // directions); false when neither fits.
@@ -198,7 +203,7 @@ Result<std::vector<Entry>> find_entries(const Model& m, int count) {
   std::vector<Vec2> chosen;
   for (int idx : order) {
     if (static_cast<int>(out.size()) >= count) break;
-    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
+    const Vec2 c = axis_point(m, idx);
     bool far = true;
     for (Vec2 q : chosen)
       far = far && distance(q, c) > 2.0 * r + 2.0 * m.want_helix_mm;
@@ -209,7 +214,7 @@ Result<std::vector<Entry>> find_entries(const Model& m, int count) {
     out.push_back(e);
   }
   if (out.empty()) {
-    const Vec2 c = m.grid.to_world(order.front() % m.grid.width, order.front() / m.grid.width);
+    const Vec2 c = axis_point(m, order.front());
     char b[96];
     std::snprintf(b, sizeof b, "(%.3f, %.3f)", c.x, c.y);
     return Status(Error::kNoEntryFound, "the tool fits at " + std::string(b) +
@@ -229,7 +234,7 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
   int best_px = min_px - 1;
   bool found = false;
   for (int idx : axis) {
-    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
+    const Vec2 c = axis_point(m, idx);
     if (stock.material_in_disk(c, 0.5 * r, 0) > 0) continue;
     const int px = stock.material_in_disk(c, r);
     if (px > best_px) {
@@ -257,7 +262,7 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
   }
   best_px = min_px - 1;
   for (int idx : axis) {
-    const Vec2 c = m.grid.to_world(idx % m.grid.width, idx / m.grid.width);
+    const Vec2 c = axis_point(m, idx);
     // A ramp reaches at most 4 R either way.
     if (stock.material_in_disk(c, 5.0 * r, 0) == 0) continue;
     Entry cand;
