@@ -106,12 +106,28 @@ void push_out_of_walls(const Model& m, Vec2& p, double on) {
   const double reach = m.radius_mm + m.wall_stock_mm;
   Vec2 best = p;
   double best_d = pocket::distance_to_rings(m.region, p);
-  Vec2 c = p;
+  Vec2 c = p, q_prev, n_prev;
+  bool have_prev = false;
   for (int round = 0; round < 16 && best_d < reach - 1e-9; ++round) {
     const Vec2 q = pocket::nearest_on_rings(m.region, c);
     const double d = distance(c, q);
     if (d < 1e-9 || !pocket::point_in_region(m.region, c)) break;
-    c = q + (c - q) * (on / d);
+    const Vec2 n = (c - q) / d;
+    Vec2 next = q + n * on;
+    // Alternating projections crawl where the two walls meet at a small angle (a ø12 point
+    // stayed 4 um inside after 16 rounds between a round and a square island): once the
+    // nearest wall has changed, go to the corner of the two walls' offset lines, which
+    // the curvature of the walls moves by second-order terms only.
+    const double det = cross(n, n_prev);
+    if (have_prev && distance(q, q_prev) > 1e-6 && std::abs(det) > 1e-3) {
+      const double b1 = on + dot(n, q), b2 = on + dot(n_prev, q_prev);
+      const Vec2 x{(b1 * n_prev.y - b2 * n.y) / det, (n.x * b2 - n_prev.x * b1) / det};
+      if (distance(x, c) < 0.1 * m.radius_mm) next = x;
+    }
+    q_prev = q;
+    n_prev = n;
+    have_prev = true;
+    c = next;
     const double dc = pocket::distance_to_rings(m.region, c);
     if (dc > best_d && pocket::point_in_region(m.region, c)) {
       best = c;
