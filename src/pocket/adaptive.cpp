@@ -99,9 +99,9 @@ constexpr double kWallClearanceMm = 0.002;
 // an island) are less than a tool diameter apart. The chooser's pixel test keeps the disk
 // within about a fifth of a pixel of them, not exactly off them: the random pocket sweep
 // found a point 3.4 um into an island 1.9 mm from a wall (ø3 tool, pixel 0.027 mm). Such a
-// point is pushed out along the nearest wall's normal, again while another wall becomes
-// the nearest (alternating projections, which settle in the wedge between the two within
-// a few rounds); if that does not get it clear it keeps the position that gouges least.
+// point is pushed out along the nearest wall's normal, and once another wall is the
+// nearest, to the corner of the two walls' offset lines; if 16 rounds do not get it clear
+// it keeps the position that gouges least.
 void push_out_of_walls(const Model& m, Vec2& p, double on) {
   const double reach = m.radius_mm + m.wall_stock_mm;
   Vec2 best = p;
@@ -189,7 +189,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
     std::size_t at = 0;
     for (std::size_t k = 0; k < lp.pts.size(); ++k) {
       const double d = distance(lp.pts[k], t);
-      if (d < best && (k + 1 >= lp.pts.size() || !lp.jump[k] || k == 0 || !lp.jump[k - 1])) {
+      if (d < best) {
         best = d;
         at = k;
       }

@@ -303,7 +303,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   // Material given up on (no resume point reaches it); tried again from a new entry once
   // nothing else is left.
   BitImage given_up(m.grid.width, m.grid.height);
-  auto drop = [&](int i, int j) { given_up.set(i, j, true); };
+  auto give_up = [&](int i, int j) { given_up.set(i, j, true); };
   std::vector<int> axis;  // medial axis, computed when first needed
   // A new entry must take at least one straight step's worth of material to be worth its
   // retract and helix.
@@ -329,7 +329,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     }
     return true;
   };
-  auto drop_disk = [&](Vec2 c) {
+  auto give_up_disk = [&](Vec2 c) {
     const Vec2 q = m.grid.to_px(c);
     const double r = m.radius_mm / m.h;
     const int j0 = std::max(0, static_cast<int>(std::ceil(q.y - r)));
@@ -339,7 +339,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       const int i0 = std::max(0, static_cast<int>(std::ceil(q.x - half)));
       const int i1 = std::min(m.grid.width - 1, static_cast<int>(std::floor(q.x + half)));
       for (int i = i0; i <= i1; ++i)
-        if (stock.material().get(i, j)) drop(i, j);
+        if (stock.material().get(i, j)) give_up(i, j);
     }
   };
   RawPath raw;
@@ -409,7 +409,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       // for now, to be taken from a new entry (find_entry_for_material below) once nothing
       // else is left.
       if (slot_like(pos, c.p - pos)) {
-        drop_disk(c.p);
+        give_up_disk(c.p);
         break;
       }
       const int removed = stock.cut(pos, c.p);
@@ -432,7 +432,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       if (idle_mm > next_shortcut_mm) {
         next_shortcut_mm = idle_mm + shortcut_mm;
         // A shortcut that led to no cutting: give up on that pixel, go on following.
-        if (shortcut_pending && !cut_since_shortcut) drop(short_i, short_j);
+        if (shortcut_pending && !cut_since_shortcut) give_up(short_i, short_j);
         shortcut_pending = false;
         std::size_t tail = raw.eng.size();
         while (tail > 0 && raw.eng[tail - 1] <= m.cut_px && !raw.jump[tail - 1])
@@ -477,7 +477,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     }
     pos = raw.pts.back();
     if (raw.eng.size() >= max_steps || iterations >= max_steps) break;
-    if (resumed && raw.eng.size() <= before_session) drop(last_i, last_j);
+    if (resumed && raw.eng.size() <= before_session) give_up(last_i, last_j);
     Vec2 at, d;
     int new_entry = -1;
     if (!find_resume(m, stock, pos, at, d, last_i, last_j, given_up)) {
