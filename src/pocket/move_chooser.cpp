@@ -477,7 +477,12 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     }
     pos = raw.pts.back();
     if (raw.eng.size() >= max_steps || iterations >= max_steps) break;
-    if (resumed && raw.eng.size() <= before_session) give_up(last_i, last_j);
+    // A resumed session that cut nothing gives up the material within a tool radius of the
+    // pixel it was aimed at, not that pixel alone: the next resume is then aimed elsewhere
+    // instead of at its neighbour (one L with three islands spent 117 sessions in a row on
+    // one spot and hit the session limit with 1640 mm^2 left; a new entry takes such
+    // material in the end).
+    if (resumed && raw.eng.size() <= before_session) give_up_disk(m.grid.to_world(last_i, last_j));
     Vec2 at, d;
     int new_entry = -1;
     if (!find_resume(m, stock, pos, at, d, last_i, last_j, given_up)) {

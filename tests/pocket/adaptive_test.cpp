@@ -261,6 +261,28 @@ TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
   EXPECT_GE(o.sweep.within_20pct, 0.82);
 }
 
+// Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
+// sessions that cut nothing gave up one pixel each and used up the session limit on one
+// spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
+// of near slot next to a wedge).
+TEST(AdaptivePocket, RandomPocketWhereResumesCutNothing) {
+  const Pocket p = load("random_seed65.json");
+  Tool t;
+  t.diameter_mm = 16.0;
+  AdaptiveParams ap;
+  ap.stepover_mm = 0.8;
+  ap.depth_mm = 3.0;
+  auto r = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  // The sweep at 0.25 mm (a 16 mm tool spans 64 of its pixels; 11 m of path at 0.08 mm took
+  // 27 s), material within 0.5 mm of a wall not counted.
+  const auto s =
+      testing::sweep_check(p.region, 8.0, r->toolpath, r->target_engagement_deg, 0.25, 0.5);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.residual_mm2, 1.0);
+  EXPECT_GE(s.within_20pct, 0.85);
+}
+
 TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   Pocket narrow = make_pocket({{0, 0}, {40, 0}, {40, 5}, {0, 5}}, {}, "narrow").value();
   Tool t;
