@@ -70,13 +70,17 @@ struct Outcome {
   testing::SweepReport sweep;
 };
 
-Outcome run(const Pocket& p, double tool_d, double stepover_mm) {
+Result<AdaptiveResult> generate(const Pocket& p, double tool_d, double stepover_mm) {
   Tool t;  // a flat end mill (Tool's defaults), built here so the test needs no tool parser
   t.diameter_mm = tool_d;
   AdaptiveParams ap;
   ap.stepover_mm = stepover_mm;
   ap.depth_mm = 3.0;
-  auto r = adaptive_pocket(p, t, ap);
+  return adaptive_pocket(p, t, ap);
+}
+
+Outcome run(const Pocket& p, double tool_d, double stepover_mm) {
+  auto r = generate(p, tool_d, stepover_mm);
   EXPECT_TRUE(r.ok()) << r.status().to_string();
   Outcome o{r.value(), {}};
   o.sweep = testing::sweep_check(p.region, 0.5 * tool_d, o.result.toolpath,
@@ -267,12 +271,7 @@ TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
 // of near slot next to a wedge).
 TEST(AdaptivePocket, RandomPocketWhereResumesCutNothing) {
   const Pocket p = load("random_seed65.json");
-  Tool t;
-  t.diameter_mm = 16.0;
-  AdaptiveParams ap;
-  ap.stepover_mm = 0.8;
-  ap.depth_mm = 3.0;
-  auto r = adaptive_pocket(p, t, ap);
+  auto r = generate(p, 16.0, 0.8);
   ASSERT_TRUE(r.ok()) << r.status().to_string();
   // The sweep at 0.25 mm (a 16 mm tool spans 64 of its pixels; 11 m of path at 0.08 mm took
   // 27 s), material within 0.5 mm of a wall not counted.
