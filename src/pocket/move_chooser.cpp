@@ -306,7 +306,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   auto give_up = [&](int i, int j) { given_up.set(i, j, true); };
   std::vector<int> axis;  // medial axis, computed when first needed
   // A new entry must take at least one straight step's worth of material to be worth its
-  // retract and helix.
+  // retract and its plunge, helix or ramp.
   const int entry_min_px = std::max(1, static_cast<int>(std::ceil(m.target_px)));
   // Whether a move's contact arc reaches kSlotDeg: the front half of a circle just outside
   // the tool (whose own disk at `at` is cleared) sampled every two degrees, from the sides
