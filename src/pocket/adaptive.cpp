@@ -180,9 +180,10 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
         tips.push_back(b);
     }
   if (tips.empty() || lp.pts.size() < 2) return;
-  const double near = kTipReachPx * m.h;
-  // Per path point, the tips it visits (in the order found).
-  std::vector<std::vector<Vec2>> visits(lp.pts.size());
+  const double near = std::max(kTipReachPx * m.h, 0.5 * m.radius_mm);
+  // Per path point, the tips it visits (in the order found), each as the points of the way
+  // there (the tip last).
+  std::vector<std::vector<std::vector<Vec2>>> visits(lp.pts.size());
   bool any = false;
   for (Vec2 t : tips) {
     double best = 1e300, reached = 1e300;
@@ -198,10 +199,23 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
     }
     if (reached < 0.05 * m.h || best > near) continue;
     if (pocket::distance_to_rings(m.region, t) < reach - 1e-9 ||
-        !pocket::point_in_region(m.region, t) ||
-        pocket::segment_distance_to_rings(m.region, lp.pts[at], t) < reach - 1e-7)
+        !pocket::point_in_region(m.region, t))
       continue;
-    visits[at].push_back(t);
+    const Vec2 from = lp.pts[at];
+    auto clear = [&](Vec2 a, Vec2 b) {
+      return pocket::segment_distance_to_rings(m.region, a, b) >= reach - 1e-7;
+    };
+    if (clear(from, t)) {
+      visits[at].push_back({t});
+    } else {
+      // The straight way grazes the wall it runs along (the chord between two points on
+      // the offset of a convex corner dips inside it: 0.3 um on an L with a rectangular
+      // island, and the wedge kept 1.6 mm^2): go by its midpoint pushed out of the walls.
+      Vec2 via = (from + t) * 0.5;
+      push_out_of_walls(m, via, on);
+      if (!pocket::point_in_region(m.region, via) || !clear(from, via) || !clear(via, t)) continue;
+      visits[at].push_back({via, t});
+    }
     any = true;
   }
   if (!any) return;
@@ -212,10 +226,12 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
   out.entry.clear();
   for (std::size_t k = 0; k < lp.pts.size(); ++k) {
     out.pts.push_back(lp.pts[k]);
-    for (Vec2 t : visits[k]) {
-      out.pts.push_back(t);
-      out.pts.push_back(lp.pts[k]);
-      for (int q = 0; q < 2; ++q) {
+    for (const std::vector<Vec2>& way : visits[k]) {
+      // There and back the same way.
+      for (std::size_t q = 0; q < 2 * way.size(); ++q) {
+        out.pts.push_back(q < way.size()           ? way[q]
+                          : q + 1 < 2 * way.size() ? way[2 * way.size() - 2 - q]
+                                                   : lp.pts[k]);
         out.kind.push_back(StepKind::kCut);
         out.jump.push_back(false);
         out.entry.push_back(-1);
