@@ -68,8 +68,9 @@ class Chooser {
   // the target finds the crossing in a few degrees instead of up to 2 theta_max + 1 probes
   // (our change, for speed and for continuity of curvature). The walk probes every
   // kStride degrees and fills in the skipped ones only round the crossing (a one-degree
-  // walk cost about 20 probes a step on the benchmark pocket). When the walk fails (a gouge
-  // or the end of the range) the paper's full scan decides; taking the move nearest the
+  // walk cost about 20 probes a step on the benchmark pocket). When the walk reaches the end
+  // of the range without nearing the target it walks the other way (below); when that
+  // fails too, or at a gouge, the paper's full scan decides; taking the move nearest the
   // gouge instead cost 15 points of the +-20 % share. Longer strides without the fill-in
   // (doubling, then bisection) jump over the engagement's peak (it is unimodal in theta,
   // not monotonic) and find the far crossing: a worse path.
@@ -90,38 +91,59 @@ class Chooser {
     start = std::clamp(start, -tm, tm);
     Candidate k = get(start);
     if (consider(k)) return valid(k);
-    if (k.eng >= 0) {
-      const int dir = k.eng < tar ? 1 : -1;
+    // The one-degree walk of the paper's order, probed every kStride degrees: when a
+    // strided probe is in the band, past the target or a gouge, the degrees skipped since
+    // the last probe are walked one by one, so the move is the walk's move wherever the
+    // engagement is monotonic over kStride degrees. Returns whether it found the move (in
+    // `found`), and false with `exhausted` when it reached the end of the range without
+    // meeting the target or a gouge.
+    const bool above = k.eng > tar;
+    Candidate found;
+    auto walk = [&](int dir, bool& exhausted) {
+      exhausted = false;
       const int end = dir > 0 ? tm : -tm;
-      // The one-degree walk of the paper's order, probed every kStride degrees: when a
-      // strided probe is in the band, past the target or a gouge, the degrees skipped
-      // since the last probe are walked one by one, so the move is the walk's move
-      // wherever the engagement is monotonic over kStride degrees.
       int lo = start;
       while (lo != end) {
         int t = lo + dir * kStride;
         if ((t - end) * dir > 0) t = end;
         const Candidate n = get(t);
-        const bool event =
-            n.eng < 0 || std::abs(n.eng - tar) < m_.tol_px || (dir > 0) == (n.eng > tar);
+        const bool event = n.eng < 0 || std::abs(n.eng - tar) < m_.tol_px || (n.eng > tar) != above;
         if (!event) {
           consider(n);
           lo = t;
           continue;
         }
-        bool gouge = false;
         for (int u = lo + dir; u != t + dir; u += dir) {
           const Candidate w = get(u);
-          if (w.eng < 0) {
-            gouge = true;
-            break;
+          if (w.eng < 0) return false;  // a gouge
+          if (consider(w)) {
+            found = valid(w);
+            return true;
           }
-          if (consider(w)) return valid(w);
-          if ((dir > 0) == (w.eng > tar)) return valid(best);  // crossed the target
+          if ((w.eng > tar) != above) {  // crossed the target
+            found = valid(best);
+            return true;
+          }
         }
-        if (gouge) break;
         lo = t;
       }
+      exhausted = true;
+      return false;
+    };
+    if (k.eng >= 0) {
+      // Turning by +theta turns towards the material, so the engagement is expected to
+      // approach the target in this direction.
+      bool exhausted = false;
+      if (walk(above ? -1 : 1, exhausted)) return found;
+      // Our change: the range ended without the engagement even approaching the target.
+      // The material lies on the tool's other side (along a wall the tool reached against
+      // its milling direction), so the engagement runs the other way with theta: walk the
+      // other way. Left to Algorithm 3's scan below, whose early stop assumes the usual
+      // direction, this case took the move back into the wall at twice the target every
+      // second step, a zigzag along the wall (random pockets at 40 % stepover: 65 % of the
+      // cut within +-20 %, FreeCAD's adaptive clearing 82 %). Test:
+      // AdaptivePocket.HighStepoverAlongAWallReachedAgainstTheMillingDirection.
+      if (exhausted && walk(above ? 1 : -1, exhausted)) return found;
     }
     // Algorithm 3's scan from -theta_max with its early returns, at 5 degree strides
     // (probes are the cost of the whole method), then refined to 1 degree round the best.

@@ -282,6 +282,22 @@ TEST(AdaptivePocket, RandomPocketWhereResumesCutNothing) {
   EXPECT_GE(s.within_20pct, 0.85);
 }
 
+// ø16 at 40 % stepover (78 degrees) in a plain rectangle. Once the first spiral met the
+// walls, the tool reached the right wall against its milling direction, with the material
+// on its other side, where the engagement falls as the move turns towards the material
+// side the chooser assumes. The walk found no crossing, and Algorithm 3's scan (which stops
+// at the first move worse than the best so far) took the move back into the wall at twice
+// the target every second step: a zigzag along the wall, 141 degrees at most, 73.6 % of
+// the cut within +-20 %. Now arcs: 117 degrees at most (in a corner), 78.5 %.
+TEST(AdaptivePocket, HighStepoverAlongAWallReachedAgainstTheMillingDirection) {
+  const Pocket p = make_pocket({{0, 0}, {70, 0}, {70, 50}, {0, 50}}, {}, "70 x 50").value();
+  const Outcome o = run(p, 16.0, 6.4);
+  expect_correct(p, o, -1.0);
+  EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
+  EXPECT_LE(o.sweep.max_engagement_deg, 1.6 * o.result.target_engagement_deg);
+  EXPECT_GE(o.sweep.within_20pct, 0.77);
+}
+
 TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   Pocket narrow = make_pocket({{0, 0}, {40, 0}, {40, 5}, {0, 5}}, {}, "narrow").value();
   Tool t;
