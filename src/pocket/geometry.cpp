@@ -48,11 +48,22 @@ double point_line_distance(Vec2 p, Vec2 a, Vec2 b) {
 }
 
 double distance_to_rings(const PolygonSet& region, Vec2 p) {
-  double d = std::numeric_limits<double>::infinity();
+  // Squared distances, one root at the end, and edges whose box lies farther than the best
+  // so far skipped: the exact-geometry checks of the output call this for every path point
+  // (a hypot per edge was 8 % of the benchmark L's time).
+  double d2 = std::numeric_limits<double>::infinity();
   for (const Ring& r : region.rings)
-    for (std::size_t i = 0, n = r.size(); i < n; ++i)
-      d = std::min(d, point_segment_distance(p, r[i], r[(i + 1) % n]));
-  return d;
+    for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+      const Vec2 a = r[i], b = r[(i + 1) % n];
+      const double gx = std::max({std::min(a.x, b.x) - p.x, 0.0, p.x - std::max(a.x, b.x)});
+      const double gy = std::max({std::min(a.y, b.y) - p.y, 0.0, p.y - std::max(a.y, b.y)});
+      if (gx * gx + gy * gy >= d2) continue;
+      const Vec2 ab = b - a;
+      const double l2 = norm_sq(ab);
+      const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+      d2 = std::min(d2, norm_sq(p - (a + ab * t)));
+    }
+  return std::sqrt(d2);
 }
 
 double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b) {
