@@ -278,19 +278,51 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
   // material farther away was never tried (the random pocket sweep found 200 mm^2 left
   // that way).
   const int rounds = window_mm > 0.0 ? 16 : 1 << 30;
+  std::vector<Px> px;
   for (int round = 0; round < rounds; ++round) {
-    std::vector<Px> px;
-    // In a window, every third pixel each way is plenty to find the nearest material.
-    const int lattice = window_mm > 0.0 ? 3 : 1;
-    for (int j = wj0; j <= wj1; j += lattice) {
-      if (mat.count(j, wi0, wi1) == 0) continue;
-      for (int i = wi0; i <= wi1; i += lattice)
-        if (mat.get(i, j) && !given_up.get(i, j))
-          px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
+    px.clear();
+    std::size_t tries = 0;
+    if (window_mm > 0.0) {
+      // In a window, every third pixel each way is plenty to find the nearest material.
+      for (int j = wj0; j <= wj1; j += 3) {
+        if (mat.count(j, wi0, wi1) == 0) continue;
+        for (int i = wi0; i <= wi1; i += 3)
+          if (mat.get(i, j) && !given_up.get(i, j))
+            px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
+      }
+      if (static_cast<double>(px.size()) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm)
+        return false;
+      tries = std::min<std::size_t>(px.size(), 12);
+    } else {
+      // The nearest `tries` of all material pixels not given up, gathered from a square
+      // round `from` that doubles until it holds that many within its inscribed circle
+      // (every pixel outside the square is farther): the same pixels as sorting them all,
+      // which gathered the whole stock (up to a million pixels) at every session's end.
+      const std::size_t total = mat.count_all_except(given_up);
+      if (static_cast<double>(total) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm) return false;
+      tries = std::min<std::size_t>(total, std::size_t{64} << std::min(round, 6));
+      const Vec2 c = m.grid.to_px(from);
+      for (double w = 32.0;; w *= 2.0) {
+        const int i0 = std::max(0, static_cast<int>(std::floor(c.x - w)));
+        const int i1 = std::min(mat.width() - 1, static_cast<int>(std::ceil(c.x + w)));
+        const int j0 = std::max(0, static_cast<int>(std::floor(c.y - w)));
+        const int j1 = std::min(mat.height() - 1, static_cast<int>(std::ceil(c.y + w)));
+        const bool all = i0 == 0 && j0 == 0 && i1 == mat.width() - 1 && j1 == mat.height() - 1;
+        const double inside2 = (w * m.h) * (w * m.h) * (1.0 - 1e-9);
+        std::size_t inside = 0;
+        px.clear();
+        for (int j = j0; j <= j1 && i0 <= i1; ++j) {
+          if (mat.count(j, i0, i1) == 0) continue;
+          mat.for_each_set(j, i0, i1, [&](int i) {
+            if (given_up.get(i, j)) return;
+            const double d2 = norm_sq(m.grid.to_world(i, j) - from);
+            px.push_back({d2, i, j});
+            inside += d2 <= inside2 ? 1 : 0;
+          });
+        }
+        if (all || inside >= tries) break;
+      }
     }
-    if (static_cast<double>(px.size()) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm) return false;
-    const std::size_t tries = std::min<std::size_t>(
-        px.size(), window_mm > 0.0 ? 12 : std::size_t{64} << std::min(round, 6));
     std::partial_sort(px.begin(), px.begin() + static_cast<std::ptrdiff_t>(tries), px.end(),
                       [](const Px& a, const Px& b) {
                         return a.d2 != b.d2 ? a.d2 < b.d2 : (a.j != b.j ? a.j < b.j : a.i < b.i);

@@ -53,6 +53,13 @@ std::size_t BitImage::count_all() const {
   return n;
 }
 
+std::size_t BitImage::count_all_except(const BitImage& mask) const {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < bits_.size(); ++k)
+    n += static_cast<std::size_t>(popcount<>(bits_[k] & ~mask.bits_[k]));
+  return n;
+}
+
 BitImage rasterize(const PolygonSet& region, const Grid& grid) {
   BitImage img(grid.width, grid.height);
   std::vector<double> xs;

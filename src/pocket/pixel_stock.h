@@ -96,6 +96,8 @@ class BitImage {
     return n;
   }
   std::size_t count_all() const;
+  /// Set bits that are not set in `mask` (same size).
+  std::size_t count_all_except(const BitImage& mask) const;
 
  private:
   [[gnu::always_inline]] const std::uint64_t* row(int j) const {
