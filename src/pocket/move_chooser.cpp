@@ -555,7 +555,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
         // sweep left up to 226 mm^2 behind before this). Each such entry clears its disk, so
         // the material strictly shrinks.
         // No entry can take entry_min_px when less than that is left in all (the usual end:
-        // a few pixels in corners); the medial axis and its walks then cost 10 % of the
+        // a few pixels in corners); the medial axis and its walks then cost 7 % of the
         // benchmark L's time for nothing.
         if (stock.material().count_all() < static_cast<std::size_t>(entry_min_px)) break;
         given_up = BitImage(m.grid.width, m.grid.height);
