@@ -94,13 +94,12 @@ class Chooser {
     // The one-degree walk of the paper's order, probed every kStride degrees: when a
     // strided probe is in the band, past the target or a gouge, the degrees skipped since
     // the last probe are walked one by one, so the move is the walk's move wherever the
-    // engagement is monotonic over kStride degrees. Returns whether it found the move (in
-    // `found`), and false with `exhausted` when it reached the end of the range without
-    // meeting the target or a gouge.
+    // engagement is monotonic over kStride degrees. kFound puts the move in `found`;
+    // kExhausted: the end of the range, without meeting the target or a gouge.
     const bool above = k.eng > tar;
     Candidate found;
-    auto walk = [&](int dir, bool& exhausted) {
-      exhausted = false;
+    enum class Walk { kFound, kGouge, kExhausted };
+    auto walk = [&](int dir) {
       const int end = dir > 0 ? tm : -tm;
       int lo = start;
       while (lo != end) {
@@ -115,26 +114,25 @@ class Chooser {
         }
         for (int u = lo + dir; u != t + dir; u += dir) {
           const Candidate w = get(u);
-          if (w.eng < 0) return false;  // a gouge
+          if (w.eng < 0) return Walk::kGouge;
           if (consider(w)) {
             found = valid(w);
-            return true;
+            return Walk::kFound;
           }
           if ((w.eng > tar) != above) {  // crossed the target
             found = valid(best);
-            return true;
+            return Walk::kFound;
           }
         }
         lo = t;
       }
-      exhausted = true;
-      return false;
+      return Walk::kExhausted;
     };
     if (k.eng >= 0) {
       // Turning by +theta turns towards the material, so the engagement is expected to
       // approach the target in this direction.
-      bool exhausted = false;
-      if (walk(above ? -1 : 1, exhausted)) return found;
+      const Walk w = walk(above ? -1 : 1);
+      if (w == Walk::kFound) return found;
       // Our change: the range ended without the engagement even approaching the target.
       // The material lies on the tool's other side (along a wall the tool reached against
       // its milling direction), so the engagement runs the other way with theta: walk the
@@ -143,7 +141,7 @@ class Chooser {
       // second step, a zigzag along the wall (random pockets at 40 % stepover: 65 % of the
       // cut within +-20 %, FreeCAD's adaptive clearing 82 %). Test:
       // AdaptivePocket.HighStepoverAlongAWallReachedAgainstTheMillingDirection.
-      if (exhausted && walk(above ? 1 : -1, exhausted)) return found;
+      if (w == Walk::kExhausted && walk(above ? 1 : -1) == Walk::kFound) return found;
     }
     // Algorithm 3's scan from -theta_max with its early returns, at 5 degree strides
     // (probes are the cost of the whole method), then refined to 1 degree round the best.
