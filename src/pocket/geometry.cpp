@@ -33,12 +33,20 @@ bool point_in_region(const PolygonSet& region, Vec2 p) {
   return true;
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+namespace {
+
+// The point of segment ab nearest to p (a for a zero-length segment).
+Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double l2 = norm_sq(ab);
-  double t = l2 > 0.0 ? dot(p - a, ab) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return distance(p, a + ab * t);
+  const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return a + ab * t;
+}
+
+}  // namespace
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  return distance(p, nearest_on_segment(p, a, b));
 }
 
 double point_line_distance(Vec2 p, Vec2 a, Vec2 b) {
@@ -58,10 +66,7 @@ double distance_to_rings(const PolygonSet& region, Vec2 p) {
       const double gx = std::max({std::min(a.x, b.x) - p.x, 0.0, p.x - std::max(a.x, b.x)});
       const double gy = std::max({std::min(a.y, b.y) - p.y, 0.0, p.y - std::max(a.y, b.y)});
       if (gx * gx + gy * gy >= d2) continue;
-      const Vec2 ab = b - a;
-      const double l2 = norm_sq(ab);
-      const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-      d2 = std::min(d2, norm_sq(p - (a + ab * t)));
+      d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, a, b)));
     }
   return std::sqrt(d2);
 }
@@ -110,10 +115,7 @@ Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p) {
   Vec2 q = p;
   for (const Ring& r : region.rings)
     for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-      const Vec2 a = r[i], ab = r[(i + 1) % n] - a;
-      const double l2 = norm_sq(ab);
-      const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-      const Vec2 c = a + ab * t;
+      const Vec2 c = nearest_on_segment(p, r[i], r[(i + 1) % n]);
       const double d2 = norm_sq(p - c);
       if (d2 < best) {
         best = d2;
