@@ -94,6 +94,51 @@ std::vector<float> squared_distance_transform(const BitImage& features, bool fea
   return f;
 }
 
+BitImage dilate_by_disk(const BitImage& img, double radius_px) {
+  const int w = img.width(), h = img.height();
+  BitImage out(w, h);
+  if (radius_px < 0.0) return out;
+  // Half widths of the disk's rows: the largest whole dx with dx^2 + dy^2 <= r^2, compared
+  // in the same double arithmetic as a threshold on the exact transform's squared values.
+  const double r2 = radius_px * radius_px;
+  const int reach = static_cast<int>(std::floor(radius_px)) + 1;
+  std::vector<int> half(static_cast<std::size_t>(2 * reach + 1), -1);
+  for (int dy = -reach; dy <= reach; ++dy) {
+    const double rest = r2 - static_cast<double>(dy) * dy;
+    if (rest < 0.0) continue;
+    int dx = static_cast<int>(std::sqrt(rest));
+    while (static_cast<double>(dx + 1) * (dx + 1) + static_cast<double>(dy) * dy <= r2)
+      ++dx;
+    while (dx >= 0 && static_cast<double>(dx) * dx + static_cast<double>(dy) * dy > r2)
+      --dx;
+    half[static_cast<std::size_t>(dy + reach)] = dx;
+  }
+  const int nw = img.words_per_row();
+  auto word = [&](int j, int wd) {
+    return j < 0 || j >= h || wd < 0 || wd >= nw ? std::uint64_t{0} : img.word(j, wd);
+  };
+  for (int j = 0; j < h; ++j)
+    for (int wd = 0; wd < nw; ++wd) {
+      const std::uint64_t b = word(j, wd);
+      out.set_word(j, wd, out.word(j, wd) | b);
+      // Set pixels whose four neighbours are all set (outside the image counts as unset)
+      // need no disk: their neighbours' disks cover theirs.
+      const std::uint64_t left = (b << 1) | (word(j, wd - 1) >> 63);
+      const std::uint64_t right = (b >> 1) | (word(j, wd + 1) << 63);
+      std::uint64_t edge = b & ~(left & right & word(j - 1, wd) & word(j + 1, wd));
+      for (; edge != 0; edge &= edge - 1) {
+        const int i = wd * 64 + __builtin_ctzll(edge);
+        for (int dy = -reach; dy <= reach; ++dy) {
+          const int dx = half[static_cast<std::size_t>(dy + reach)];
+          const int jj = j + dy;
+          if (dx < 0 || jj < 0 || jj >= h) continue;
+          out.set_span(jj, std::max(0, i - dx), std::min(w - 1, i + dx));
+        }
+      }
+    }
+  return out;
+}
+
 std::vector<int> medial_axis(const std::vector<float>& squared_d, int width, int height,
                              double min_d) {
   std::vector<int> out;

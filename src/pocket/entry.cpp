@@ -76,8 +76,8 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.region = pocket.region;
   m.wall_stock_mm = p.wall_stock_mm;
   for (int j = 0; j < m.grid.height; ++j)
-    for (int i = 0; i < m.grid.width; ++i)
-      if (!m.pocket.get(i, j)) m.forbidden.set(i, j, true);
+    for (int w = 0; w < m.pocket.words_per_row(); ++w)
+      m.forbidden.set_word(j, w, ~m.pocket.word(j, w));
   for (const Ring& ring : pocket.region.rings)
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
@@ -103,14 +103,11 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
       for (int i = 0; i < m.grid.width; ++i)
         if (std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) > r_px)
           free_centres.set(i, j, true);
-    const auto to_free = squared_distance_transform(free_centres, true);
+    const BitImage reach = dilate_by_disk(free_centres, r_px);
     m.material = BitImage(m.grid.width, m.grid.height);
-    const double r2 = r_px * r_px;
     for (int j = 0; j < m.grid.height; ++j)
-      for (int i = 0; i < m.grid.width; ++i)
-        if (m.pocket.get(i, j) && !m.forbidden.get(i, j) &&
-            static_cast<double>(to_free[m.grid.index(i, j)]) <= r2)
-          m.material.set(i, j, true);
+      for (int w = 0; w < m.pocket.words_per_row(); ++w)
+        m.material.set_word(j, w, m.pocket.word(j, w) & ~m.forbidden.word(j, w) & reach.word(j, w));
   }
   double perim = 0.0;
   for (const Ring& ring : pocket.region.rings)

@@ -196,9 +196,10 @@ template <class RowFn>
     if ((j >> kBlockShift) != band) {
       band = j >> kBlockShift;
       const int o_end = std::min(rows_ - 1, o + ((1 << kBlockShift) - 1 - (j & 7)));
-      double widest = half;
-      for (int q = o + 1; q <= o_end; ++q)
-        widest = std::max(widest, hb[q]);
+      // The band's widest row is the one nearest the centre, which lies between rows
+      // reach_ and reach_ + 1 (row o has dy = o - reach_ - bf / kSub).
+      const double widest =
+          std::max(hb[std::clamp(reach_, o, o_end)], hb[std::clamp(reach_ + 1, o, o_end)]);
       const int w0 = static_cast<int>(std::ceil(b.x - widest)),
                 w1 = static_cast<int>(std::floor(b.x + widest));
       const int k0 = w0 > w1 ? -1 : blocks.first_set(band, w0 >> kBlockShift, w1 >> kBlockShift);

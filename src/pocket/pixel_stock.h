@@ -106,6 +106,26 @@ class BitImage {
   std::uint64_t word(int j, int w) const { return row(j)[static_cast<std::size_t>(w)]; }
   /// Replaces columns 8 k to 8 k + 7 of row j by the bits of `byte`.
   void set_byte(int j, int k, unsigned byte);
+  /// Replaces word w of row j (bits past the width are dropped: they stay clear).
+  void set_word(int j, int w, std::uint64_t v) {
+    if (w == words_ - 1 && (width_ & 63) != 0) v &= ~std::uint64_t{0} >> (64 - (width_ & 63));
+    row(j)[static_cast<std::size_t>(w)] = v;
+  }
+  /// Sets columns [x0, x1] of row j (x0 <= x1, both inside).
+  void set_span(int j, int x0, int x1) {
+    std::uint64_t* r = row(j);
+    const int w0 = x0 >> 6, w1 = x1 >> 6;
+    const std::uint64_t lo = ~std::uint64_t{0} << static_cast<unsigned>(x0 & 63);
+    const std::uint64_t hi = ~std::uint64_t{0} >> static_cast<unsigned>(63 - (x1 & 63));
+    if (w0 == w1) {
+      r[w0] |= lo & hi;
+      return;
+    }
+    r[w0] |= lo;
+    for (int w = w0 + 1; w < w1; ++w)
+      r[w] = ~std::uint64_t{0};
+    r[w1] |= hi;
+  }
 
  private:
   [[gnu::always_inline]] const std::uint64_t* row(int j) const {
