@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <type_traits>
 
 namespace swarf::pocket {
 
@@ -162,6 +163,16 @@ PixelStock::PixelStock(Grid grid, BitImage material, BitImage forbidden, double 
       const double q = radius_px_ * radius_px_ - dy * dy;
       half_[static_cast<std::size_t>(f) * rows_ + o] = q >= 0.0 ? std::sqrt(q) : -1.0;
     }
+  // The rows a disk has are consecutive: from the first to the last with a half width.
+  first_row_.assign(kSub, rows_);
+  last_row_.assign(kSub, -1);
+  for (int f = 0; f < kSub; ++f)
+    for (int o = 0; o < rows_; ++o)
+      if (half_[static_cast<std::size_t>(f) * rows_ + o] >= 0.0) {
+        first_row_[static_cast<std::size_t>(f)] =
+            std::min(first_row_[static_cast<std::size_t>(f)], o);
+        last_row_[static_cast<std::size_t>(f)] = o;
+      }
 }
 
 // Calls fn(j, x0, x1) for each row piece of disk(to) \ disk(from) (pixel centres, radius
@@ -188,47 +199,55 @@ template <class RowFn>
   const double* ha = half_.data() + static_cast<std::size_t>(af) * rows_;
   // The band (8 rows) of the current row, and the columns of its occupied blocks that
   // disk(to) can reach: the first and last occupied block under the band's widest row.
-  int band = -1, cx0 = 0, cx1 = -1;
-  for (int o = 0; o < rows_; ++o) {
-    const double half = hb[o];
-    if (half < 0.0) continue;
-    const int j = bY + o - reach_;
-    if ((j >> kBlockShift) != band) {
-      band = j >> kBlockShift;
-      const int o_end = std::min(rows_ - 1, o + ((1 << kBlockShift) - 1 - (j & 7)));
-      // The band's widest row is the one nearest the centre, which lies between rows
-      // reach_ and reach_ + 1 (row o has dy = o - reach_ - bf / kSub).
-      const double widest =
-          std::max(hb[std::clamp(reach_, o, o_end)], hb[std::clamp(reach_ + 1, o, o_end)]);
-      const int w0 = static_cast<int>(std::ceil(b.x - widest)),
-                w1 = static_cast<int>(std::floor(b.x + widest));
-      const int k0 = w0 > w1 ? -1 : blocks.first_set(band, w0 >> kBlockShift, w1 >> kBlockShift);
-      if (k0 < 0) {  // nothing in this band's reach: skip its rows
-        o = o_end;
-        continue;
+  // Written once for a crescent and once for a whole disk (from far away: the probes of
+  // the move chooser, the gouge tests, stamps), which needs no work for disk(from).
+  auto rows = [&](auto crescent) SWARF_INLINE {
+    int band = -1, cx0 = 0, cx1 = -1;
+    const int o_last = last_row_[static_cast<std::size_t>(bf)];
+    for (int o = first_row_[static_cast<std::size_t>(bf)]; o <= o_last; ++o) {
+      const double half = hb[o];
+      const int j = bY + o - reach_;
+      if ((j >> kBlockShift) != band) {
+        band = j >> kBlockShift;
+        const int o_end = std::min(rows_ - 1, o + ((1 << kBlockShift) - 1 - (j & 7)));
+        // The band's widest row is the one nearest the centre, which lies between rows
+        // reach_ and reach_ + 1 (row o has dy = o - reach_ - bf / kSub).
+        const double widest =
+            std::max(hb[std::clamp(reach_, o, o_end)], hb[std::clamp(reach_ + 1, o, o_end)]);
+        const int w0 = static_cast<int>(std::ceil(b.x - widest)),
+                  w1 = static_cast<int>(std::floor(b.x + widest));
+        const int k0 = w0 > w1 ? -1 : blocks.first_set(band, w0 >> kBlockShift, w1 >> kBlockShift);
+        if (k0 < 0) {  // nothing in this band's reach: skip its rows
+          o = o_end;
+          continue;
+        }
+        cx0 = std::max(w0, k0 << kBlockShift);
+        cx1 = std::min(w1, (blocks.last_set(band, k0, w1 >> kBlockShift) << kBlockShift) +
+                               (1 << kBlockShift) - 1);
       }
-      cx0 = std::max(w0, k0 << kBlockShift);
-      cx1 = std::min(w1, (blocks.last_set(band, k0, w1 >> kBlockShift) << kBlockShift) +
-                             (1 << kBlockShift) - 1);
+      const int x0 = std::max(cx0, static_cast<int>(std::ceil(b.x - half))),
+                x1 = std::min(cx1, static_cast<int>(std::floor(b.x + half)));
+      if (x0 > x1) continue;
+      if constexpr (!decltype(crescent)::value) {
+        if (!fn(j, x0, x1)) return;
+      } else {
+        const int oa = j - aY + reach_;
+        const double hA = (oa >= 0 && oa < rows_) ? ha[oa] : -1.0;
+        const int a0 = static_cast<int>(std::ceil(a.x - hA)),
+                  a1 = static_cast<int>(std::floor(a.x + hA));
+        if (hA < 0.0 || a0 > a1) {
+          if (!fn(j, x0, x1)) return;
+          continue;
+        }
+        if (x0 <= std::min(x1, a0 - 1) && !fn(j, x0, std::min(x1, a0 - 1))) return;
+        if (std::max(x0, a1 + 1) <= x1 && !fn(j, std::max(x0, a1 + 1), x1)) return;
+      }
     }
-    const int x0 = std::max(cx0, static_cast<int>(std::ceil(b.x - half))),
-              x1 = std::min(cx1, static_cast<int>(std::floor(b.x + half)));
-    if (x0 > x1) continue;
-    const int oa = j - aY + reach_;
-    const double hA = (a_near && oa >= 0 && oa < rows_) ? ha[oa] : -1.0;
-    if (hA < 0.0) {
-      if (!fn(j, x0, x1)) return true;
-      continue;
-    }
-    const int a0 = static_cast<int>(std::ceil(a.x - hA)),
-              a1 = static_cast<int>(std::floor(a.x + hA));
-    if (a0 > a1) {
-      if (!fn(j, x0, x1)) return true;
-      continue;
-    }
-    if (x0 <= std::min(x1, a0 - 1) && !fn(j, x0, std::min(x1, a0 - 1))) return true;
-    if (std::max(x0, a1 + 1) <= x1 && !fn(j, std::max(x0, a1 + 1), x1)) return true;
-  }
+  };
+  if (a_near)
+    rows(std::true_type{});
+  else
+    rows(std::false_type{});
   return true;
 }
 

@@ -223,6 +223,7 @@ class PixelStock {
   static constexpr int kSub = 64;
   int reach_ = 0, rows_ = 0;
   std::vector<double> half_;
+  std::vector<int> first_row_, last_row_;  // per f: the disk's first and last row
 };
 
 }  // namespace swarf::pocket
