@@ -261,6 +261,15 @@ namespace {
 // terminates). They stay material: a path that passes them still sees and cuts them (when
 // they were taken out of the stock instead, a later pass went through them as if through
 // cleared space, and the final path, re-simulated, cut them in a full slot).
+// The directions, every 15 degrees, in which find_resume looks for a resume point round a
+// pixel (computed once: sin and cos were a quarter of a run that searched long).
+const std::array<Vec2, 24> kRingDirs = [] {
+  std::array<Vec2, 24> d{};
+  for (int a = 0; a < 360; a += 15)
+    d[static_cast<std::size_t>(a / 15)] = {std::cos(deg_to_rad(a)), std::sin(deg_to_rad(a))};
+  return d;
+}();
+
 bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
                  int& pj, BitImage& given_up, double window_mm = 0.0) {
   const BitImage& mat = stock.material();
@@ -349,7 +358,7 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
     for (std::size_t k = 0; k < tries; ++k) {
       const Vec2 q = m.grid.to_world(px[k].i, px[k].j);
       for (int a = 0; a<360; a += window_mm> 0.0 ? 30 : 15) {
-        const Vec2 u{std::cos(deg_to_rad(a)), std::sin(deg_to_rad(a))};
+        const Vec2 u = kRingDirs[static_cast<std::size_t>(a / 15)];
         const Vec2 c = q + u * ring;
         if (stock.gouges(c) || stock.material_in_disk(c, m.radius_mm + 0.5 * m.h, 0) > 0) continue;
         at = c;

@@ -330,16 +330,6 @@ Vec2 far_away(Vec2 c, double r_mm) {
 template <bool kHw>
 [[gnu::always_inline]] inline bool PixelStock::gouges_t(Vec2 centre) const {
   bool gouge = false;
-  if (clearance_sq_ != nullptr) {
-    // Decided by the clearance of the nearest pixel when it is more than a pixel from R.
-    const Vec2 q = grid_.to_px(centre);
-    const int i = nearest_px(q.x), j = nearest_px(q.y);
-    if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
-      const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
-      if (c - 0.71 > radius_px_ + 1.0) return false;
-      if (c + 0.71 < radius_px_ - 1.0) return true;
-    }
-  }
   const bool inside = crescent_rows(far_away(centre, tool_radius_mm()), centre, forbidden_blocks_,
                                     [&](int j, int x0, int x1) SWARF_INLINE {
                                       gouge = forbidden_.count<kHw>(j, x0, x1) > 0;
@@ -420,7 +410,7 @@ int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
 #endif
   return cut_t<false>(from, to, visit, user);
 }
-bool PixelStock::gouges(Vec2 centre) const {
+bool PixelStock::gouges_scan(Vec2 centre) const {
 #ifdef SWARF_POCKET_DISPATCH
   if (cpu_has_hw()) return gouges_hw(centre);
 #endif

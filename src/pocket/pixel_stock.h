@@ -5,6 +5,7 @@
 // the two disks is scanned, row by row with popcounts, never the whole disk or image.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -183,7 +184,21 @@ class PixelStock {
   /// not depend on it). Not thread-safe against running stocks; default true.
   static void allow_cpu_features(bool allow);
   /// Whole-disk versions for places the tool has not come from (entry, links, checks).
-  bool gouges(Vec2 centre) const;
+  bool gouges(Vec2 centre) const {
+    if (clearance_sq_ != nullptr) {
+      // Decided by the clearance of the nearest pixel when it is more than a pixel from R
+      // (inline: a resume search asks this millions of times).
+      const Vec2 q = grid_.to_px(centre);
+      const double fx = q.x + 0.5, fy = q.y + 0.5;
+      if (fx >= 0.0 && fy >= 0.0 && fx < grid_.width && fy < grid_.height) {
+        const int i = static_cast<int>(fx), j = static_cast<int>(fy);  // floor: both >= 0
+        const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+        if (c - 0.71 > radius_px_ + 1.0) return false;
+        if (c + 0.71 < radius_px_ - 1.0) return true;
+      }
+    }
+    return gouges_scan(centre);
+  }
   /// Material pixels in the disk; may stop counting once past `enough` (then returns
   /// some value above it), e.g. 0 to ask "is there any?".
   int material_in_disk(Vec2 centre, double radius_mm, int enough = kNoLimit) const;
@@ -203,6 +218,7 @@ class PixelStock {
   int probe_t(Vec2 from, Vec2 to, int enough) const;
   template <bool kHw>
   int cut_t(Vec2 from, Vec2 to, CutVisitor visit, void* user);
+  bool gouges_scan(Vec2 centre) const;  // the disk scan behind gouges()
   template <bool kHw>
   bool gouges_t(Vec2 centre) const;
   template <bool kHw>
