@@ -2,7 +2,8 @@
 // material and one of forbidden pixels (walls and islands grown by the wall stock and a
 // resolution margin). The engagement of a move is the number of material pixels the tool
 // disk removes between two positions (seed 000 Fig. 2 middle); only the crescent between
-// the two disks is scanned, row by row with popcounts, never the whole disk or image.
+// the two disks is scanned, row by row with popcounts, never the whole image; 8 x 8 pixel
+// blocks that hold nothing are skipped (block_occupancy).
 #pragma once
 
 #include <cmath>
