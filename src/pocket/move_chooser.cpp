@@ -253,14 +253,6 @@ class Chooser {
 
 namespace {
 
-// Where to resume after the boundary round ended with reachable material left (our
-// addition: the paper stops, which leaves material behind islands or beyond a narrow
-// neck). Tries the remaining material pixels nearest to `from` that are not in `given_up`;
-// a resume point is a free, already cleared centre just out of reach of the pixel, facing
-// it. Pixels for which no such point exists are added to `given_up` (so the search
-// terminates). They stay material: a path that passes them still sees and cuts them (when
-// they were taken out of the stock instead, a later pass went through them as if through
-// cleared space, and the final path, re-simulated, cut them in a full slot).
 // The directions, every 15 degrees, in which find_resume looks for a resume point round a
 // pixel (computed once: sin and cos were a quarter of a run that searched long).
 const std::array<Vec2, 24> kRingDirs = [] {
@@ -270,6 +262,14 @@ const std::array<Vec2, 24> kRingDirs = [] {
   return d;
 }();
 
+// Where to resume after the boundary round ended with reachable material left (our
+// addition: the paper stops, which leaves material behind islands or beyond a narrow
+// neck). Tries the remaining material pixels nearest to `from` that are not in `given_up`;
+// a resume point is a free, already cleared centre just out of reach of the pixel, facing
+// it. Pixels for which no such point exists are added to `given_up` (so the search
+// terminates). They stay material: a path that passes them still sees and cuts them (when
+// they were taken out of the stock instead, a later pass went through them as if through
+// cleared space, and the final path, re-simulated, cut them in a full slot).
 bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
                  int& pj, BitImage& given_up, double window_mm = 0.0) {
   const BitImage& mat = stock.material();
