@@ -46,7 +46,10 @@ TEST(DistanceTransform, ExactSquaredDistancesToTheNearestFeature) {
       for (int j = 0; j < img.height(); ++j)
         for (int i = 0; i < img.width(); ++i) {
           const long want = brute_sq(img, i, j, value);
-          ASSERT_EQ(static_cast<long>(d[static_cast<std::size_t>(j * img.width() + i)]), want)
+          ASSERT_EQ(static_cast<long>(
+                        d[static_cast<std::size_t>(j) * static_cast<std::size_t>(img.width()) +
+                          static_cast<std::size_t>(i)]),
+                    want)
               << "seed " << seed << " value " << value << " at " << i << "," << j;
         }
     }
@@ -64,7 +67,9 @@ TEST(DistanceTransform, DiskDilationIsTheThresholdedTransform) {
       int inside = 0;
       for (int j = 0; j < img.height(); ++j)
         for (int i = 0; i < img.width(); ++i) {
-          const bool want = static_cast<double>(d[static_cast<std::size_t>(j * 150 + i)]) <= r * r;
+          const bool want =
+              static_cast<double>(
+                  d[static_cast<std::size_t>(j) * 150 + static_cast<std::size_t>(i)]) <= r * r;
           ASSERT_EQ(dil.get(i, j), want)
               << "seed " << seed << " r " << r << " at " << i << "," << j;
           inside += want ? 1 : 0;
