@@ -45,13 +45,6 @@ bool cpu_has_hw() {
 // Row callbacks must be inlined into the kHw functions to be compiled for their target.
 #define SWARF_INLINE __attribute__((always_inline))
 
-// The pixel nearest to a pixel coordinate (a tie may go either way: the callers' bounds
-// hold for any pixel within 0.71 of the point). Inline, unlike std::lround (a libm call
-// that cost 1 % of a pocket's run).
-[[gnu::always_inline]] inline int nearest_px(double x) {
-  return static_cast<int>(std::floor(x + 0.5));
-}
-
 }  // namespace
 
 std::size_t BitImage::count_all() const {
@@ -255,26 +248,22 @@ template <bool kHw>
 [[gnu::always_inline]] inline int PixelStock::probe_t(Vec2 from, Vec2 to, int enough) const {
   int n = 0;
   bool gouge = false;
-  if (clearance_sq_ != nullptr) {
-    // Far from every forbidden pixel (nearest pixel's clearance minus the distance to it
-    // exceeds the radius by a pixel): only material needs counting.
-    const Vec2 q = grid_.to_px(to);
-    const int i = nearest_px(q.x), j = nearest_px(q.y);
-    if (i >= 0 && j >= 0 && i < grid_.width && j < grid_.height) {
-      const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
-      // The nearest forbidden pixel lies within c +- 0.71 of `to` (the exact transform's
-      // value at the nearest pixel); 0.05 covers the 1/kSub snapping of the row widths.
-      // Inside R: disk(to) holds it, disk(from) is free, so the crescent does: a gouge,
-      // without scanning (boundary moves and the scans probe many such moves).
-      if (c + 0.71 < radius_px_ - 0.05) return kGouge;
-      if (c - 0.71 > radius_px_ + 1.0) {
-        // No gouge is possible here, so the count may stop early.
-        crescent_rows(from, to, material_blocks_, [&](int jj, int x0, int x1) SWARF_INLINE {
-          n += material_.count<kHw>(jj, x0, x1);
-          return n <= enough;
-        });
-        return n;
-      }
+  // Far from every forbidden pixel (nearest pixel's clearance minus the distance to it
+  // exceeds the radius by a pixel): only material needs counting.
+  double c = 0.0;
+  if (clearance_px(to, c)) {
+    // The nearest forbidden pixel lies within c +- 0.71 of `to`; 0.05 covers the 1/kSub
+    // snapping of the row widths. Inside R: disk(to) holds it, disk(from) is free, so the
+    // crescent does: a gouge, without scanning (boundary moves and the scans probe many
+    // such moves).
+    if (c + 0.71 < radius_px_ - 0.05) return kGouge;
+    if (c - 0.71 > radius_px_ + 1.0) {
+      // No gouge is possible here, so the count may stop early.
+      crescent_rows(from, to, material_blocks_, [&](int jj, int x0, int x1) SWARF_INLINE {
+        n += material_.count<kHw>(jj, x0, x1);
+        return n <= enough;
+      });
+      return n;
     }
   }
   const bool inside =

@@ -186,17 +186,12 @@ class PixelStock {
   static void allow_cpu_features(bool allow);
   /// Whole-disk versions for places the tool has not come from (entry, links, checks).
   bool gouges(Vec2 centre) const {
-    if (clearance_sq_ != nullptr) {
-      // Decided by the clearance of the nearest pixel when it is more than a pixel from R
-      // (inline: a resume search asks this millions of times).
-      const Vec2 q = grid_.to_px(centre);
-      const double fx = q.x + 0.5, fy = q.y + 0.5;
-      if (fx >= 0.0 && fy >= 0.0 && fx < grid_.width && fy < grid_.height) {
-        const int i = static_cast<int>(fx), j = static_cast<int>(fy);  // floor: both >= 0
-        const double c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
-        if (c - 0.71 > radius_px_ + 1.0) return false;
-        if (c + 0.71 < radius_px_ - 1.0) return true;
-      }
+    // Decided by the clearance of the nearest pixel when it is more than a pixel from R
+    // (inline: a resume search asks this millions of times).
+    double c = 0.0;
+    if (clearance_px(centre, c)) {
+      if (c - 0.71 > radius_px_ + 1.0) return false;
+      if (c + 0.71 < radius_px_ - 1.0) return true;
     }
     return gouges_scan(centre);
   }
@@ -220,6 +215,17 @@ class PixelStock {
   template <bool kHw>
   int cut_t(Vec2 from, Vec2 to, CutVisitor visit, void* user);
   bool gouges_scan(Vec2 centre) const;  // the disk scan behind gouges()
+  // The clearance map's value (px) at the pixel nearest to p, when there is a map and p's
+  // pixel is in the image. The nearest forbidden pixel lies within c +- 0.71 of p.
+  bool clearance_px(Vec2 p, double& c) const {
+    if (clearance_sq_ == nullptr) return false;
+    const Vec2 q = grid_.to_px(p);
+    const double fx = q.x + 0.5, fy = q.y + 0.5;
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < grid_.width && fy < grid_.height)) return false;
+    const int i = static_cast<int>(fx), j = static_cast<int>(fy);  // floor: both >= 0
+    c = std::sqrt(static_cast<double>((*clearance_sq_)[grid_.index(i, j)]));
+    return true;
+  }
   template <bool kHw>
   bool gouges_t(Vec2 centre) const;
   template <bool kHw>
