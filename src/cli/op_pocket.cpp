@@ -97,6 +97,10 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["layers"] = r->layers;
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;
+  if (r->candidate_time_s.size() > 1) {
+    out.summary["plunge_candidate_time_s"] = r->candidate_time_s;
+    out.summary["plunge_candidate_kept"] = r->chosen_candidate;
+  }
   out.summary["summary"] = summary_line(s);
   if (in.wants_csv || in.wants_report) out.csv_override = steps_csv(*r);
   if (in.wants_report) {

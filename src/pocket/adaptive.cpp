@@ -10,6 +10,7 @@
 #include "pocket/adaptive_internal.h"
 #include "pocket/distance_transform.h"
 #include "pocket/geometry.h"
+#include "swarf/core/parallel.h"
 #include "swarf/polygon/polygon.h"
 
 namespace swarf {
@@ -409,32 +410,42 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   costs.lift_mm = params.clearance_z_mm - (params.top_z_mm - params.depth_mm);
   costs.smoothing_iterations = params.smoothing_iterations;
   // seed 000 4.1: several plunge points; keep the fastest path (engagement is held to the
-  // same target by construction, so time decides).
-  std::size_t best = 0;
-  double best_time = 1e300;
-  std::vector<LinkedPath> paths;
-  std::vector<std::vector<Entry>> orders;
+  // same target by construction, so time decides). Each candidate is a simulation of its own
+  // on its own stock, so they run in parallel; the choice (least time, the first candidate on
+  // a tie) and every path are the same for any thread count.
   const std::size_t candidates =
       std::min(entries->size(), static_cast<std::size_t>(params.plunge_candidates));
-  for (std::size_t k = 0; k < candidates; ++k) {
-    ctx.report("adaptive pocket", static_cast<double>(k) / static_cast<double>(candidates));
-    std::vector<Entry> order{(*entries)[k]};
+  std::vector<LinkedPath> paths(candidates);
+  std::vector<std::vector<Entry>> orders(candidates);
+  std::vector<double> times(candidates, 0.0);
+  std::vector<Status> failed(candidates);
+  Context worker;  // cancellation only: progress callbacks need not be thread-safe
+  worker.cancel = ctx.cancel;
+  worker.threads = 1;
+  ctx.report("adaptive pocket", 0.0);
+  parallel_for(candidates, ctx.threads, [&](std::size_t k) {
+    std::vector<Entry>& order = orders[k];
+    order.push_back((*entries)[k]);
     for (std::size_t q = 0; q < entries->size(); ++q)
       if (q != k) order.push_back((*entries)[q]);
     pocket::PixelStock stock = pocket::fresh_stock(m);
     pocket::cut_entry(stock, m, order.front());
-    auto raw = pocket::generate_raw_path(m, stock, order, ctx);
-    if (!raw) return raw.status();
-    paths.push_back(pocket::postprocess(m, order, raw.value(), costs));
-    snap_to_wall_offset(m, paths.back());
-    reach_into_tips(m, paths.back());
-    orders.push_back(std::move(order));
-    const double t = path_time_s(paths.back(), params);
-    if (t < best_time) {
-      best_time = t;
-      best = k;
+    auto raw = pocket::generate_raw_path(m, stock, order, worker);
+    if (!raw) {
+      failed[k] = raw.status();
+      return;
     }
+    paths[k] = pocket::postprocess(m, order, raw.value(), costs);
+    snap_to_wall_offset(m, paths[k]);
+    reach_into_tips(m, paths[k]);
+    times[k] = path_time_s(paths[k], params);
+  });
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < candidates; ++k) {
+    if (!failed[k].ok()) return failed[k];
+    if (times[k] < times[best]) best = k;
   }
+  ctx.report("adaptive pocket", 1.0);
   const std::vector<Entry>& order = orders[best];
   const Entry& e = order.front();
   const LinkedPath& lp = paths[best];
@@ -444,6 +455,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.target_engagement_deg = m.target_deg;
   res.target_engagement_px = m.target_px;
   res.plunge_point = e.centre;
+  for (std::size_t k = 0; k < candidates; ++k)
+    res.candidate_plunge_points.push_back(orders[k].front().centre);
+  res.candidate_time_s = times;
+  res.chosen_candidate = static_cast<int>(best);
   res.helix_radius_mm = e.helix_radius_mm;
   res.trochoid_groups = lp.trochoid_groups;
   res.boundary_groups = lp.boundary_groups;

@@ -326,6 +326,56 @@ TEST(AdaptivePocket, SameInputSameToolpath) {
     ASSERT_EQ(a->toolpath.moves[k].end, b->toolpath.moves[k].end) << "move " << k;
 }
 
+// seed 000 4.1: several plunge points along the medial axis, the fastest path kept. The
+// candidates are simulated in parallel; the choice and the path must not depend on it.
+TEST(AdaptivePocket, PlungeCandidatesKeepTheFastestWhateverTheThreads) {
+  const Pocket p = load("kirimoto_pocket.json");
+  Tool t;
+  t.diameter_mm = 10.0;
+  AdaptiveParams ap;
+  ap.stepover_mm = 2.0;
+  ap.depth_mm = 3.0;
+  auto single = adaptive_pocket(p, t, ap);  // the first candidate alone
+  ap.plunge_candidates = 4;
+  Context one, two;
+  one.threads = 1;
+  two.threads = 2;
+  auto a = adaptive_pocket(p, t, ap, one);
+  auto b = adaptive_pocket(p, t, ap, two);
+  ASSERT_TRUE(single.ok() && a.ok() && b.ok());
+  ASSERT_EQ(a->candidate_time_s.size(), 4u);
+  ASSERT_EQ(a->candidate_plunge_points.size(), 4u);
+  // Kept: the least time, the first one on a tie.
+  const auto fastest = std::min_element(a->candidate_time_s.begin(), a->candidate_time_s.end());
+  EXPECT_EQ(a->chosen_candidate, fastest - a->candidate_time_s.begin());
+  EXPECT_EQ(a->plunge_point,
+            a->candidate_plunge_points[static_cast<std::size_t>(a->chosen_candidate)]);
+  // The first candidate is what a single-candidate run computes, to the bit.
+  ASSERT_EQ(single->candidate_time_s.size(), 1u);
+  EXPECT_EQ(a->candidate_time_s[0], single->candidate_time_s[0]);
+  EXPECT_EQ(a->candidate_plunge_points[0], single->plunge_point);
+  // Distinct plunge points, each where the tool fits (clear of every wall by its radius).
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Vec2 c = a->candidate_plunge_points[i];
+    double clearance = 1e300;
+    for (const Ring& ring : p.region.rings)
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec2 u = ring[k], v = ring[(k + 1) % ring.size()];
+        const double l = std::clamp(dot(c - u, v - u) / norm_sq(v - u), 0.0, 1.0);
+        clearance = std::min(clearance, distance(c, u + (v - u) * l));
+      }
+    EXPECT_GE(clearance, 0.5 * t.diameter_mm) << "candidate " << i;
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GT(distance(c, a->candidate_plunge_points[j]), 1.0) << i << " and " << j;
+  }
+  // Same choice and same moves with one thread or two.
+  EXPECT_EQ(a->candidate_time_s, b->candidate_time_s);
+  EXPECT_EQ(a->chosen_candidate, b->chosen_candidate);
+  ASSERT_EQ(a->toolpath.moves.size(), b->toolpath.moves.size());
+  for (std::size_t k = 0; k < a->toolpath.moves.size(); ++k)
+    ASSERT_EQ(a->toolpath.moves[k].end, b->toolpath.moves[k].end) << "move " << k;
+}
+
 TEST(AdaptivePocket, StepoverAndEngagementAngleAreTheSameParameter) {
   // acos(1 - stepover / R): 10 % of a 10 mm tool is 36.87 degrees.
   EXPECT_NEAR(engagement_angle_deg(1.0, 5.0), rad_to_deg(std::acos(0.8)), 1e-12);

@@ -2,7 +2,12 @@
 // the independent checker (the "high-resolution sweep of the final G-code").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "cli/cli_test_util.h"
 #include "pocket/sweep_checker.h"
@@ -33,6 +38,32 @@ TEST(PocketCli, GcodeOfTheKirimotoPocketSweepsClean) {
   EXPECT_LE(s.residual_mm2, 4 * 1.2);
   EXPECT_EQ(s.slot_length_mm, 0.0);
   EXPECT_GT(s.cutting_length_mm, 500.0);
+}
+
+// Several plunge points (run in parallel): the summary names each one's time and the one
+// kept, and the G-code is the same byte for byte with one thread or two.
+TEST(PocketCli, PlungeCandidatesAreReportedAndThreadsChangeNothing) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const std::string common = "pocket " + in + " --tool flat:10 --stepover 2 --depth 3" +
+                             " --plunge-candidates 3 --threads ";
+  const auto r1 =
+      testing::run_swarf(common + "1 -o " + dir.file("a.nc") + " --report " + dir.file("rep"));
+  const auto r2 = testing::run_swarf(common + "2 -o " + dir.file("b.nc"));
+  ASSERT_EQ(r1.status, 0) << r1.out;
+  ASSERT_EQ(r2.status, 0) << r2.out;
+  auto slurp = [](const std::string& f) {
+    std::ifstream is(f, std::ios::binary);
+    std::stringstream ss;
+    ss << is.rdbuf();
+    return ss.str();
+  };
+  EXPECT_EQ(slurp(dir.file("a.nc")), slurp(dir.file("b.nc")));
+  const auto j = nlohmann::json::parse(slurp(dir.file("rep/summary.json")));
+  const auto times = j.at("plunge_candidate_time_s").get<std::vector<double>>();
+  ASSERT_EQ(times.size(), 3u);
+  EXPECT_EQ(j.at("plunge_candidate_kept").get<long>(),
+            std::min_element(times.begin(), times.end()) - times.begin());
 }
 
 TEST(PocketCli, OpenOutlineIsABadInputExitNamingTheFile) {

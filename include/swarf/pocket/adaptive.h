@@ -93,6 +93,12 @@ struct AdaptiveResult {
   double target_engagement_px = 0.0;
   Vec2 plunge_point;
   double helix_radius_mm = 0.0;  ///< 0 when the entry is a ramp
+  /// Plunge points tried along the medial axis (AdaptiveParams::plunge_candidates, seed 000
+  /// 4.1) and the estimated time of each one's 2D path, s; `chosen_candidate` is the one
+  /// kept (the fastest; plunge_point is its point).
+  std::vector<Vec2> candidate_plunge_points;
+  std::vector<double> candidate_time_s;
+  int chosen_candidate = 0;
   int layers = 0;
   int retracts_per_layer = 0;
   int trochoid_groups = 0;
