@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Swarf's adaptive pocket against FreeCAD's adaptive clearing (libarea Adaptive2d, with its
+# finishing profile on, FreeCAD's default, and off) on the random pockets of
+# bench/random_pocket.py, all three judged by the same independent sweep
+# (swarf_pocket_sweep). Prints one line per pocket and a summary. Needs FreeCAD
+# (sudo apt-get install freecad-python3; a benchmark tool, not a Swarf dependency).
+#   bench/compare_freecad_random.sh [first-seed] [last-seed] [build-dir]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+first=${1:-12}
+last=${2:-60}
+build=${3:-build/release}
+swarf=$build/swarf
+sweep=$build/bench/swarf_pocket_sweep
+[ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
+python3 -c 'import sys; sys.path.append("/usr/lib/freecad-python3/lib"); import area' 2>/dev/null ||
+  { echo "needs FreeCAD: sudo apt-get install freecad-python3" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# field NAME LINE: the number after NAME in a sweep line
+field() { echo "$2" | sed -E "s/.*$1 ([0-9.]+).*/\1/"; }
+for s in $(seq "$first" "$last"); do
+  read -r D so kind ni < <(python3 bench/random_pocket.py "$s" "$tmp/p.json")
+  frac=$(awk -v d="$D" -v s="$so" 'BEGIN { printf "%.4f", s / d }')
+  target=$(awk -v d="$D" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
+  /usr/bin/time -f "%U %S" -o "$tmp/t" "$swarf" pocket "$tmp/p.json" --tool "flat:$D" \
+    --stepover "$so" --depth 6 -o "$tmp/s.nc" >/dev/null 2>&1
+  line="$s D$D so=$so $kind isl=$ni"
+  add() {  # generator cpu sweep-line
+    line="$line | $1 ${2}s w20 $(field within20 "$3") res $(field residual "$3") gouge $(field gouge "$3") slot $(field slot "$3")"
+  }
+  add swarf "$(awk '{printf "%.3f", $1 + $2}' "$tmp/t")" "$("$sweep" "$tmp/p.json" "$D" "$target" "$tmp/s.nc")"
+  for fp in on off; do
+    flag=""
+    [ $fp = off ] && flag=--no-finishing-profile
+    out=$(python3 bench/freecad_adaptive.py "$tmp/p.json" "$D" "$frac" "$tmp/f.nc" $flag | tail -1)
+    add "FC-$fp" "$(echo "$out" | sed -E 's/.*cpu ([0-9.]+) s.*/\1/')" \
+      "$("$sweep" "$tmp/p.json" "$D" "$target" "$tmp/f.nc")"
+  done
+  echo "$line"
+done | tee "$tmp/out"
+python3 - "$tmp/out" <<'PY'
+import re, statistics, sys
+rows = []
+for l in open(sys.argv[1]):
+    parts = l.split(" | ")
+    gens = {}
+    for p in parts[1:]:
+        m = re.match(r"(\S+) (\S+)s w20 (\S+) res (\S+) gouge (\S+) slot (\S+)", p)
+        gens[m[1]] = [float(x) for x in m.groups()[1:]]
+    rows.append(gens)
+print("%d pockets: generator, CPU s in all, within +-20 %% mean / median, residual mm2 in all "
+      "(pockets over 1 mm2), pockets with a gouge over 5 um, full slot mm in all" % len(rows))
+for g in ("swarf", "FC-on", "FC-off"):
+    v = [r[g] for r in rows]
+    print("  %-6s %6.1f  %5.1f / %5.1f %%  %8.0f (%d)  %d  %6.1f" % (
+        g, sum(x[0] for x in v), statistics.mean(x[1] for x in v),
+        statistics.median(x[1] for x in v), sum(x[2] for x in v), sum(x[2] > 1 for x in v),
+        sum(x[3] > 0.005 for x in v), sum(x[4] for x in v)))
+PY
