@@ -7,13 +7,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/release}
-swarf=$build/swarf
-sweep=$build/bench/swarf_pocket_sweep
-[ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
-python3 -c 'import sys; sys.path.append("/usr/lib/freecad-python3/lib"); import area' 2>/dev/null ||
-  { echo "needs FreeCAD: sudo apt-get install freecad-python3" >&2; exit 2; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source bench/pocket_common.sh
+need_freecad
 python3 - "$tmp/star.json" <<'PY'
 import json, math, sys
 pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
@@ -45,7 +40,7 @@ for spec in "L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|1
             "80x60 + 6 islands 1 mm from walls, D10|$tmp/islands.json|10"; do
   IFS="|" read -r name file d <<<"$spec"
   so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
-  target=$(awk -v d="$d" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
+  target=$(target_deg "$d" "$so")
   t=$(cpu "$swarf" pocket "$file" --tool "flat:$d" --stepover "$so" --depth 6 -o "$tmp/s.nc")
   row "$name" "Swarf adaptive" "$t" "$("$sweep" "$file" "$d" "$target" "$tmp/s.nc")"
   for fp in on off; do

@@ -10,19 +10,14 @@ cd "$(dirname "$0")/.."
 first=${1:-12}
 last=${2:-60}
 build=${3:-build/release}
-swarf=$build/swarf
-sweep=$build/bench/swarf_pocket_sweep
-[ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
-python3 -c 'import sys; sys.path.append("/usr/lib/freecad-python3/lib"); import area' 2>/dev/null ||
-  { echo "needs FreeCAD: sudo apt-get install freecad-python3" >&2; exit 2; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source bench/pocket_common.sh
+need_freecad
 # field NAME LINE: the number after NAME in a sweep line
 field() { echo "$2" | sed -E "s/.*$1 ([0-9.]+).*/\1/"; }
 for s in $(seq "$first" "$last"); do
   read -r D so kind ni < <(python3 bench/random_pocket.py "$s" "$tmp/p.json")
   frac=$(awk -v d="$D" -v s="$so" 'BEGIN { printf "%.4f", s / d }')
-  target=$(awk -v d="$D" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
+  target=$(target_deg "$D" "$so")
   /usr/bin/time -f "%U %S" -o "$tmp/t" "$swarf" pocket "$tmp/p.json" --tool "flat:$D" \
     --stepover "$so" --depth 6 -o "$tmp/s.nc" >/dev/null 2>&1
   line="$s D$D so=$so $kind isl=$ni"

@@ -12,15 +12,11 @@ cd "$(dirname "$0")/.."
 first=${1:-12}
 last=${2:-60}
 build=${3:-build/release}
-swarf=$build/swarf
-sweep=$build/bench/swarf_pocket_sweep
-[ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source bench/pocket_common.sh
 printf "%-5s %-4s %-6s %-6s %-3s %s\n" seed tool stepov shape isl "sweep of the G-code"
 for s in $(seq "$first" "$last"); do
   read -r D so kind ni < <(python3 bench/random_pocket.py "$s" "$tmp/p.json")
-  target=$(awk -v d="$D" -v s="$so" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }')
+  target=$(target_deg "$D" "$so")
   if ! "$swarf" pocket "$tmp/p.json" --tool "flat:$D" --stepover "$so" --depth 6 -o "$tmp/p.nc" >"$tmp/log" 2>&1; then
     printf "%-5s D%-3s %-6s %-6s %-3s FAILED: %s\n" "$s" "$D" "$so" "$kind" "$ni" "$(tail -1 "$tmp/log")"
     continue
