@@ -335,6 +335,12 @@ TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   EXPECT_EQ(q.status().code(), Error::kNoEntryFound) << q.status().to_string();
 }
 
+void expect_same_moves(const AdaptiveResult& a, const AdaptiveResult& b) {
+  ASSERT_EQ(a.toolpath.moves.size(), b.toolpath.moves.size());
+  for (std::size_t k = 0; k < a.toolpath.moves.size(); ++k)
+    ASSERT_EQ(a.toolpath.moves[k].end, b.toolpath.moves[k].end) << "move " << k;
+}
+
 TEST(AdaptivePocket, SameInputSameToolpath) {
   const Pocket p = load("kirimoto_pocket.json");
   Tool t;
@@ -344,9 +350,7 @@ TEST(AdaptivePocket, SameInputSameToolpath) {
   auto a = adaptive_pocket(p, t, ap);
   auto b = adaptive_pocket(p, t, ap);
   ASSERT_TRUE(a.ok() && b.ok());
-  ASSERT_EQ(a->toolpath.moves.size(), b->toolpath.moves.size());
-  for (std::size_t k = 0; k < a->toolpath.moves.size(); ++k)
-    ASSERT_EQ(a->toolpath.moves[k].end, b->toolpath.moves[k].end) << "move " << k;
+  expect_same_moves(*a, *b);
 }
 
 // seed 000 4.1: several plunge points along the medial axis, the fastest path kept. The
@@ -394,9 +398,7 @@ TEST(AdaptivePocket, PlungeCandidatesKeepTheFastestWhateverTheThreads) {
   // Same choice and same moves with one thread or two.
   EXPECT_EQ(a->candidate_time_s, b->candidate_time_s);
   EXPECT_EQ(a->chosen_candidate, b->chosen_candidate);
-  ASSERT_EQ(a->toolpath.moves.size(), b->toolpath.moves.size());
-  for (std::size_t k = 0; k < a->toolpath.moves.size(); ++k)
-    ASSERT_EQ(a->toolpath.moves[k].end, b->toolpath.moves[k].end) << "move " << k;
+  expect_same_moves(*a, *b);
 }
 
 TEST(AdaptivePocket, StepoverAndEngagementAngleAreTheSameParameter) {
