@@ -30,6 +30,14 @@ inline CliRun run_swarf(const std::string& args) {
   return r;
 }
 
+/// The whole content of a file (empty when it cannot be read).
+inline std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 /// A fresh empty folder under the system temp dir, removed by the destructor.
 class TempDir {
  public:

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -52,14 +50,8 @@ TEST(PocketCli, PlungeCandidatesAreReportedAndThreadsChangeNothing) {
   const auto r2 = testing::run_swarf(common + "2 -o " + dir.file("b.nc"));
   ASSERT_EQ(r1.status, 0) << r1.out;
   ASSERT_EQ(r2.status, 0) << r2.out;
-  auto slurp = [](const std::string& f) {
-    std::ifstream is(f, std::ios::binary);
-    std::stringstream ss;
-    ss << is.rdbuf();
-    return ss.str();
-  };
-  EXPECT_EQ(slurp(dir.file("a.nc")), slurp(dir.file("b.nc")));
-  const auto j = nlohmann::json::parse(slurp(dir.file("rep/summary.json")));
+  EXPECT_EQ(testing::read_file(dir.file("a.nc")), testing::read_file(dir.file("b.nc")));
+  const auto j = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
   const auto times = j.at("plunge_candidate_time_s").get<std::vector<double>>();
   ASSERT_EQ(times.size(), 3u);
   EXPECT_EQ(j.at("plunge_candidate_kept").get<long>(),

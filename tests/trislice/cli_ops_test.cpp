@@ -15,13 +15,6 @@ namespace {
 using testing::run_swarf;
 using testing::TempDir;
 
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 // CL points of a "line,x,y,z" CSV.
 std::vector<Vec3> read_cl(const std::string& csv) {
   std::vector<Vec3> out;
@@ -42,7 +35,7 @@ std::vector<Vec3> dropcut_grid(const TempDir& dir, const std::string& stl) {
       run_swarf("dropcut " + dir.file(stl) + " --tool ball:6 --stepover 1 --sampling 0.25 --csv " +
                 dir.file("d.csv"));
   EXPECT_EQ(b.status, 0) << b.out;
-  return read_cl(slurp(dir.file("d.csv")));
+  return read_cl(testing::read_file(dir.file("d.csv")));
 }
 
 // An open surface (a dome without its base, as a relief or a broken export comes) has no
@@ -64,19 +57,19 @@ TEST(TriSliceCli, OpenMeshScansWithTheExactDropCutterAndRefusesContours) {
   const auto a = run_swarf(scan + "--zigzag -o " + dir.file("s.nc") + " --csv " +
                            dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
-  const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
+  const std::vector<Vec3> s = read_cl(testing::read_file(dir.file("s.csv")));
   const std::vector<Vec3> d = dropcut_grid(dir, "dome.stl");
   ASSERT_EQ(s.size(), d.size());
   ASSERT_GT(s.size(), 1000u);
   for (std::size_t k = 0; k < s.size(); ++k)
     ASSERT_NEAR(s[k].z, d[k].z, 1e-9) << "at " << s[k].x << ", " << s[k].y;
-  EXPECT_NE(slurp(dir.file("rep/summary.json")).find("open_mesh"), std::string::npos);
+  EXPECT_NE(testing::read_file(dir.file("rep/summary.json")).find("open_mesh"), std::string::npos);
   // 0.5 mm to leave: over the apex the tip stands 0.5 mm above the dome.
   const auto c = run_swarf(scan + "--stock-to-leave 0.5 -o " + dir.file("t.nc") + " --csv " +
                            dir.file("t.csv"));
   ASSERT_EQ(c.status, 0) << c.out;
   bool apex = false;
-  for (const Vec3& q : read_cl(slurp(dir.file("t.csv"))))
+  for (const Vec3& q : read_cl(testing::read_file(dir.file("t.csv"))))
     if (std::fabs(q.x) < 1e-9 && std::fabs(q.y) < 1e-9) {
       apex = true;
       EXPECT_NEAR(q.z, 8.5, 2e-3);  // the facets sit up to 1.0e-3 below the sphere
@@ -98,7 +91,7 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
                 "0.1 -o " +
                 dir.file("s.nc") + " --csv " + dir.file("s.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(a.status, 0) << a.out;
-  const std::vector<Vec3> s = read_cl(slurp(dir.file("s.csv")));
+  const std::vector<Vec3> s = read_cl(testing::read_file(dir.file("s.csv")));
   const std::vector<Vec3> d = dropcut_grid(dir, "dome.stl");
   ASSERT_EQ(s.size(), d.size());
   ASSERT_GT(s.size(), 1000u);
@@ -110,8 +103,8 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   }
   // Steep rims aside (vertical deviations there measure the slope), the grids agree.
   EXPECT_GT(static_cast<double>(close) / static_cast<double>(s.size()), 0.97);
-  EXPECT_NE(slurp(dir.file("s.nc")).find("G1"), std::string::npos);
-  EXPECT_NE(slurp(dir.file("rep/summary.json")).find("cl_points"), std::string::npos);
+  EXPECT_NE(testing::read_file(dir.file("s.nc")).find("G1"), std::string::npos);
+  EXPECT_NE(testing::read_file(dir.file("rep/summary.json")).find("cl_points"), std::string::npos);
   // Without --uniform the CL points are sampled adaptively: a subset of the uniform grid,
   // each one equal to the uniform point at its x, y, and far fewer on a block's flat top.
   ASSERT_TRUE(write_stl(dir.file("block.stl"), make_box({{0, 0, 0}, {20, 10, 5}})).ok());
@@ -123,8 +116,8 @@ TEST(TriSliceCli, SurfaceScanMatchesDropcutOnTheSameGrid) {
   const auto c = run_swarf(block + "-o " + dir.file("a.nc") + " --csv " + dir.file("a.csv"));
   ASSERT_EQ(u.status, 0) << u.out;
   ASSERT_EQ(c.status, 0) << c.out;
-  const std::vector<Vec3> un = read_cl(slurp(dir.file("u.csv")));
-  const std::vector<Vec3> ad = read_cl(slurp(dir.file("a.csv")));
+  const std::vector<Vec3> un = read_cl(testing::read_file(dir.file("u.csv")));
+  const std::vector<Vec3> ad = read_cl(testing::read_file(dir.file("a.csv")));
   ASSERT_GT(ad.size(), 100u);
   EXPECT_LT(ad.size(), un.size() / 2);
   std::size_t k = 0;
@@ -146,10 +139,10 @@ TEST(TriSliceCli, RestWritesMapAndPointsAndRejectsFlatTools) {
   const auto r = run_swarf("rest " + dir.file("slot.stl") + " --tool ball:8 --pitch 0.5 --report " +
                            dir.file("rep") + " --csv " + dir.file("rest.csv"));
   ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_EQ(slurp(dir.file("rep/rest_map.png")).substr(1, 3), "PNG");
-  EXPECT_EQ(slurp(dir.file("rep/rest_points.ply")).rfind("ply\n", 0), 0u);
+  EXPECT_EQ(testing::read_file(dir.file("rep/rest_map.png")).substr(1, 3), "PNG");
+  EXPECT_EQ(testing::read_file(dir.file("rep/rest_points.ply")).rfind("ply\n", 0), 0u);
   // Residue cells lie in the slot (10 < x < 12).
-  const std::string csv = slurp(dir.file("rest.csv"));
+  const std::string csv = testing::read_file(dir.file("rest.csv"));
   std::istringstream in(csv);
   std::string row;
   std::getline(in, row);

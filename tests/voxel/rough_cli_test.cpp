@@ -1,9 +1,7 @@
 // swarf rough end to end: the G-code it writes, read back, keeps off the part.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "cli/cli_test_util.h"
@@ -15,13 +13,6 @@
 namespace swarf {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(RoughCli, FanucProgramReadBackKeepsOffTheKirimotoPocket) {
   testing::TempDir dir;
   const std::string stl = std::string(SWARF_TEST_DATA_DIR) + "/voxel/kirimoto_pocket-test.stl";
@@ -31,15 +22,15 @@ TEST(RoughCli, FanucProgramReadBackKeepsOffTheKirimotoPocket) {
       "--rotate 0,20,45 --seed 1 --dialect fanuc -o " +
       dir.file("out.nc") + " --csv " + dir.file("path.csv") + " --report " + dir.file("rep"));
   ASSERT_EQ(run.status, 0) << run.out;
-  const auto summary = nlohmann::json::parse(slurp(dir.file("rep/summary.json")));
+  const auto summary = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
   for (const char* key : {"lift_offs", "air_length_mm", "total_length_mm", "orientations"}) {
     EXPECT_TRUE(summary.contains(key)) << key;
   }
   EXPECT_EQ(summary["orientations"].size(), 3u);
-  EXPECT_FALSE(slurp(dir.file("rep/strategies.csv")).empty());
-  EXPECT_FALSE(slurp(dir.file("path.csv")).empty());
+  EXPECT_FALSE(testing::read_file(dir.file("rep/strategies.csv")).empty());
+  EXPECT_FALSE(testing::read_file(dir.file("path.csv")).empty());
 
-  const std::string program = slurp(dir.file("out.nc"));
+  const std::string program = testing::read_file(dir.file("out.nc"));
   EXPECT_EQ(program.front(), '%');  // FANUC framing
   GcodeReadOptions ro;
   ro.start = {0.0, 0.0, 200.0};
