@@ -89,5 +89,57 @@ TEST(PolygonFast, RandomPolygonsAgreeWithTheUnion) {
   }
 }
 
+// detail::clean_path replaces Clipper's CleanPolygon for speed and must give the same points
+// in the same order (the slices, and every Boolean result, are cleaned with it). Rings on a
+// small grid so that near-duplicates, fold-backs, spikes and collinear runs are common,
+// plus rings that collapse entirely.
+TEST(PolygonClean, SameAsClippersCleanPolygon) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(-6, 6), len(0, 14), kind(0, 3);
+  int changed = 0, emptied = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    ClipperLib::Path ring;
+    const int n = len(rng);
+    ClipperLib::IntPoint p(coord(rng) * 3, coord(rng) * 3);
+    for (int i = 0; i < n; ++i) {
+      switch (kind(rng)) {
+        case 0:  // a jump anywhere
+          p = ClipperLib::IntPoint(coord(rng) * 3, coord(rng) * 3);
+          break;
+        case 1:  // a near-duplicate (within the 1.5 unit distance or just beyond)
+          p = ClipperLib::IntPoint(p.X + coord(rng) / 3, p.Y + coord(rng) / 3);
+          break;
+        case 2:  // a step along a line (collinear runs, spikes when it turns back)
+          p = ClipperLib::IntPoint(p.X + 2 * (trial % 5 - 2), p.Y + (trial % 3 - 1));
+          break;
+        default:  // back to the start (fold-backs, zero-area rings)
+          if (!ring.empty()) p = ring.front();
+          break;
+      }
+      ring.push_back(p);
+    }
+    ClipperLib::Path ours = ring, theirs;
+    detail::clean_path(ours, 1.5);
+    ClipperLib::CleanPolygon(ring, theirs, 1.5);
+    ASSERT_EQ(ours, theirs) << "trial " << trial;
+    changed += ours.size() != ring.size() ? 1 : 0;
+    emptied += ring.size() >= 3 && ours.empty() ? 1 : 0;
+  }
+  // The cases above must actually occur, or the comparison proves little.
+  EXPECT_GT(changed, 5000);
+  EXPECT_GT(emptied, 500);
+  // A long ring of real size (a sliced circle with duplicated and collinear points).
+  ClipperLib::Path circle;
+  for (int i = 0; i < 5000; ++i) {
+    const double a = 2.0 * kPi * (i / 2) / 2500.0;
+    circle.emplace_back(std::llround(4e6 * std::cos(a)), std::llround(4e6 * std::sin(a)));
+  }
+  ClipperLib::Path ours = circle, theirs;
+  detail::clean_path(ours, 1.5);
+  ClipperLib::CleanPolygon(circle, theirs, 1.5);
+  EXPECT_EQ(ours, theirs);
+  EXPECT_EQ(ours.size(), 2500u);
+}
+
 }  // namespace
 }  // namespace swarf
