@@ -63,6 +63,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.step_mm = num(p, "step");
   ap.max_deviation_deg = num(p, "max_deviation");
   ap.resolution_mm = num(p, "resolution");
+  ap.max_pixels = num(p, "max_pixels");
   ap.climb = !p.at("conventional").get<bool>();
   ap.depth_mm = num(p, "depth");
   ap.stepdown_mm = num(p, "stepdown");
@@ -125,6 +126,9 @@ const OperationRegistrar kRegistrar(Operation{
             number_param("step", 0.0, "path step length, mm (0 = tool diameter / 20)"),
             number_param("max_deviation", 90.0, "largest turn between two steps, degrees"),
             number_param("resolution", 0.0, "simulation pixel size, mm (0 = automatic)"),
+            number_param("max_pixels", 6e7,
+                         "largest simulation image, pixels (the automatic resolution is "
+                         "coarsened to fit)"),
         },
         "helix and ramp",
         {

@@ -39,6 +39,8 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
     return bad("max_deviation_deg must be in [5, 120] degrees");
   if (p.resolution_mm < 0.0 || (p.resolution_mm > 0.0 && p.resolution_mm > 0.1 * d))
     return bad("resolution_mm must be in (0, diameter / 10] mm (0 = automatic)");
+  if (!(p.max_pixels >= 1e4 && p.max_pixels <= 1e9))
+    return bad("max_pixels must be in [10000, 1e9]");
   if (!(p.depth_mm > 0.0)) return bad("depth_mm must be positive");
   if (p.stepdown_mm < 0.0) return bad("stepdown_mm must not be negative (0 = full depth)");
   if (p.stepdown_mm > tool.flute_length_mm ||

@@ -50,6 +50,35 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // sqrt(stepover x step / 64) and R / 40.
   m.h = p.resolution_mm > 0.0 ? p.resolution_mm
                               : std::min(std::sqrt(m.stepover_mm * m.step_mm / 64.0), r / 40.0);
+
+  Box2 box;
+  for (const Ring& ring : pocket.region.rings)
+    for (Vec2 q : ring)
+      box.add(q);
+  const double margin_mm = r + m.step_mm + p.wall_stock_mm;
+  auto pixels_at = [&](double h) {
+    const Vec2 size = box.size() + Vec2{2.0 * (margin_mm + 4.0 * h), 2.0 * (margin_mm + 4.0 * h)};
+    return (std::ceil(size.x / h) + 1.0) * (std::ceil(size.y / h) + 1.0);
+  };
+  // The pixel budget: a large pocket cut with a small tool (a 250 mm square with a 3 mm end
+  // mill) would need more pixels than the budget at the rule's resolution. The automatic
+  // resolution is then coarsened until it fits, as long as the disk still spans 20 pixels
+  // and a straight step at the target still removes 16 (a count noisier by about half, still
+  // inside the +-10 % band); beyond that, a clear error. An explicit resolution is not
+  // changed.
+  if (p.resolution_mm <= 0.0 && pixels_at(m.h) > p.max_pixels) {
+    const double coarsest = std::min(r / 20.0, std::sqrt(m.stepover_mm * m.step_mm / 16.0));
+    double h = m.h;
+    for (int k = 0; k < 60 && pixels_at(h) > p.max_pixels; ++k)
+      h *= 1.02;
+    if (h > coarsest)
+      return bad_parameter(
+          "pocket " + pocket.source + ": " + mm(box.size().x) + " x " + mm(box.size().y) +
+          " is too large for a " + mm(2.0 * r) + " tool within the pixel budget (" +
+          std::to_string(static_cast<long long>(p.max_pixels)) + " pixels, resolution at least " +
+          mm(coarsest) + "); split the pocket, use a larger tool or raise max_pixels");
+    m.h = h;
+  }
   m.target_px = m.stepover_mm * m.step_mm / (m.h * m.h);
   m.tol_px = std::max(1.0, m.target_px * p.tolerance_pct / 100.0);
   m.cut_px = std::max(2.0, 0.04 * m.target_px);
@@ -57,15 +86,13 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.sigma = p.climb ? -1 : 1;
   m.want_helix_mm = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
 
-  Box2 box;
-  for (const Ring& ring : pocket.region.rings)
-    for (Vec2 q : ring)
-      box.add(q);
-  const double margin = r + m.step_mm + p.wall_stock_mm + 4.0 * m.h;
-  m.grid = Grid::covering(box, m.h, margin);
-  if (static_cast<double>(m.grid.width) * m.grid.height > 6e7)
-    return bad_parameter("pocket " + pocket.source + ": resolution " + mm(m.h) +
-                         " needs more than 60 million pixels; raise resolution_mm");
+  m.grid = Grid::covering(box, m.h, margin_mm + 4.0 * m.h);
+  if (static_cast<double>(m.grid.width) * m.grid.height > p.max_pixels)
+    return bad_parameter("pocket " + pocket.source + ": resolution " + mm(m.h) + " needs " +
+                         std::to_string(static_cast<long long>(m.grid.width) * m.grid.height) +
+                         " pixels, more than max_pixels (" +
+                         std::to_string(static_cast<long long>(p.max_pixels)) +
+                         "); raise resolution_mm or max_pixels");
   m.pocket = rasterize(pocket.region, m.grid);
   // Forbidden: outside the pocket, or closer to a wall than wall stock + half a pixel, by
   // exact distance to the outline (the grid alone is only good to a pixel). The half pixel

@@ -335,6 +335,55 @@ TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   EXPECT_EQ(q.status().code(), Error::kNoEntryFound) << q.status().to_string();
 }
 
+// A pocket too large for its tool at the resolution rule's pixel size (a 250 mm square cut
+// with a 3 mm end mill needs about 90 million pixels): the automatic resolution is coarsened
+// to the pixel budget, and the path is still correct by the independent sweep. A small
+// pocket with a small budget stands for the large case here.
+TEST(AdaptivePocket, PocketTooLargeForThePixelBudgetCoarsensTheResolution) {
+  const Pocket p =
+      make_pocket({{0, 0}, {30, 0}, {30, 20}, {0, 20}}, {{{12, 7}, {18, 7}, {18, 13}, {12, 13}}},
+                  "30 x 20 with a square island")
+          .value();
+  Tool t;
+  t.diameter_mm = 2.0;
+  AdaptiveParams ap;
+  ap.stepover_mm = 0.2;
+  ap.depth_mm = 3.0;
+  // The rule (docs/pocket.md): min(sqrt(stepover x step / 64), R / 40) = 0.0177 mm, about
+  // 2.3 million pixels here.
+  const double rule_mm = std::min(std::sqrt(0.2 * 0.1 / 64.0), 1.0 / 40.0);
+  ap.max_pixels = 7e5;
+  auto coarse = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(coarse.ok()) << coarse.status().to_string();
+  const double h = coarse->resolution_mm;
+  EXPECT_GT(h, 1.5 * rule_mm);
+  const double margin = 1.0 + 0.1 + 4.0 * h;  // tool radius, step, four pixels (make_model)
+  EXPECT_LE((std::ceil((30 + 2 * margin) / h) + 1) * (std::ceil((20 + 2 * margin) / h) + 1), 7e5);
+  const auto s = testing::sweep_check(p.region, 1.0, coarse->toolpath,
+                                      coarse->target_engagement_deg, 0.05, 0.1);
+  std::printf("  coarsened to %.4f mm (rule %.4f): residual %.3f mm2, within20 %.1f %%\n", h,
+              rule_mm, s.residual_mm2, 100 * s.within_20pct);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.residual_mm2, kResidualPerCornerMm2 * 4);
+  EXPECT_GE(s.within_20pct, 0.90);
+  EXPECT_EQ(s.slot_length_mm, 0.0);
+  // Too small a budget for any acceptable pixel (20 across the tool radius, 16 per step):
+  // a named error, nothing generated.
+  ap.max_pixels = 2e5;
+  auto none = adaptive_pocket(p, t, ap);
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.status().code(), Error::kBadParameter);
+  EXPECT_NE(none.status().to_string().find("pixel budget"), std::string::npos)
+      << none.status().to_string();
+  // An explicit resolution is never changed: over the budget it is an error too.
+  ap.max_pixels = 7e5;
+  ap.resolution_mm = rule_mm;
+  auto fixed = adaptive_pocket(p, t, ap);
+  ASSERT_FALSE(fixed.ok());
+  EXPECT_NE(fixed.status().to_string().find("max_pixels"), std::string::npos)
+      << fixed.status().to_string();
+}
+
 void expect_same_moves(const AdaptiveResult& a, const AdaptiveResult& b) {
   ASSERT_EQ(a.toolpath.moves.size(), b.toolpath.moves.size());
   for (std::size_t k = 0; k < a.toolpath.moves.size(); ++k)

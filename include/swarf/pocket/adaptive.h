@@ -35,6 +35,9 @@ struct AdaptiveParams {
   double max_deviation_deg = 90.0;
   /// Pixel size of the simulation, mm; 0 = the rule of section 3.2 (see docs/pocket.md).
   double resolution_mm = 0.0;
+  /// Largest simulation image, pixels. The automatic resolution is coarsened to fit it (down
+  /// to 20 pixels across the tool radius and 16 per straight step at the target).
+  double max_pixels = 6e7;
   /// Climb milling (material on the right of the feed direction, spindle M3).
   bool climb = true;
 
