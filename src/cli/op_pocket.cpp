@@ -6,6 +6,7 @@
 #include "swarf/pocket/adaptive.h"
 #include "swarf/report/image.h"
 #include "swarf/report/plot.h"
+#include "swarf/report/pocket_picture.h"
 #include "swarf/toolpath/postprocess.h"
 
 namespace swarf::cli {
@@ -15,26 +16,6 @@ using nlohmann::json;
 
 double num(const json& p, const char* key) {
   return p.at(key).get<double>();
-}
-
-// The cut material coloured by the engagement of the step that removed it (seed 000 Fig. 2
-// right): blue low, red high (2 x target), material left red-brown, walls dark, entry grey.
-Image engagement_picture(const AdaptiveResult& r) {
-  const CutMap& m = r.cut_map;
-  Image img(m.width, m.height, Rgb{40, 40, 40});
-  for (int j = 0; j < m.height; ++j)
-    for (int i = 0; i < m.width; ++i) {
-      const std::uint32_t c = m.cells[static_cast<std::size_t>(j) * m.width + i];
-      Rgb& px = img.at(i, m.height - 1 - j);
-      if (c == 1) {
-        px = Rgb{150, 60, 40};
-      } else if (c == 2) {
-        px = Rgb{200, 200, 200};
-      } else if (c >= 3 && c - 3 < r.steps.size()) {
-        px = heat_color(r.steps[c - 3].engagement_deg / (2.0 * r.target_engagement_deg));
-      }
-    }
-  return img;
 }
 
 std::string engagement_chart(const AdaptiveResult& r) {
@@ -107,7 +88,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   if (in.wants_report) {
     out.report_files["steps.csv"] = *out.csv_override;
     out.report_files["engagement.svg"] = engagement_chart(*r);
-    out.report_files["engagement.png"] = png_bytes(engagement_picture(*r));
+    out.report_files["engagement.png"] = png_bytes(pocket_engagement_picture(*r));
   }
   out.plot_background = pocket->region;
   return out;
