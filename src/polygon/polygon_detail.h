@@ -16,7 +16,7 @@ namespace swarf::detail {
 PolygonSet normalized_nonzero_fast(const PolygonSet& set);
 
 /// Clipper's CleanPolygon rule on one ring of grid points (see polygon.cpp), in place: the
-/// same points in the same order, several times faster. Rings left with fewer than three
+/// same points in the same order, with less overhead. Rings left with fewer than three
 /// points become empty.
 void clean_path(ClipperLib::Path& path, double distance);
 
