@@ -76,6 +76,9 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["engagement_within_20pct"] = s.within_20pct;
   out.summary["max_deviation_deg"] = s.max_deviation_deg;
   out.summary["resolution_mm"] = r->resolution_mm;
+  // Said only when the pixel budget made the simulation coarser than the rule.
+  if (r->rule_resolution_mm > 0.0 && r->resolution_mm > r->rule_resolution_mm)
+    out.summary["resolution_rule_mm"] = r->rule_resolution_mm;
   out.summary["layers"] = r->layers;
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;

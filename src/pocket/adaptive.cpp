@@ -494,6 +494,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const LinkedPath& lp = paths[best];
   AdaptiveResult res;
   res.resolution_mm = m.h;
+  res.rule_resolution_mm = m.rule_h;
   res.step_mm = m.step_mm;
   res.target_engagement_deg = m.target_deg;
   res.target_engagement_px = m.target_px;

@@ -18,6 +18,7 @@ struct Model {
   double radius_mm = 0.0;    ///< tool radius
   double step_mm = 0.0;      ///< seed 000 delta_step
   double h = 0.0;            ///< pixel size
+  double rule_h = 0.0;       ///< the resolution rule's pixel size (0: given explicitly)
   double stepover_mm = 0.0;  ///< target radial stepover
   double target_deg = 0.0;
   double target_px = 0.0;  ///< seed 000 eps_tar: pixels removed by one straight step

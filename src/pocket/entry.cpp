@@ -48,8 +48,9 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // 3-5 %, well inside the +-10 % band. The tool radius must also span >= 40 pixels so
   // that the disk and the gouge margin (half a pixel) are accurate. h = the smaller of
   // sqrt(stepover x step / 64) and R / 40.
-  m.h = p.resolution_mm > 0.0 ? p.resolution_mm
-                              : std::min(std::sqrt(m.stepover_mm * m.step_mm / 64.0), r / 40.0);
+  m.rule_h =
+      p.resolution_mm > 0.0 ? 0.0 : std::min(std::sqrt(m.stepover_mm * m.step_mm / 64.0), r / 40.0);
+  m.h = p.resolution_mm > 0.0 ? p.resolution_mm : m.rule_h;
 
   Box2 box;
   for (const Ring& ring : pocket.region.rings)

@@ -357,6 +357,7 @@ TEST(AdaptivePocket, PocketTooLargeForThePixelBudgetCoarsensTheResolution) {
   ASSERT_TRUE(coarse.ok()) << coarse.status().to_string();
   const double h = coarse->resolution_mm;
   EXPECT_GT(h, 1.5 * rule_mm);
+  EXPECT_DOUBLE_EQ(coarse->rule_resolution_mm, rule_mm);  // reported, so users can tell
   const double margin = 1.0 + 0.1 + 4.0 * h;  // tool radius, step, four pixels (make_model)
   EXPECT_LE((std::ceil((30 + 2 * margin) / h) + 1) * (std::ceil((20 + 2 * margin) / h) + 1), 7e5);
   const auto s = testing::sweep_check(p.region, 1.0, coarse->toolpath,

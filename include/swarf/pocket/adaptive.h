@@ -91,6 +91,9 @@ struct AdaptiveResult {
   std::vector<AdaptiveStep> steps;  ///< one layer's 2D path (all layers repeat it)
   CutMap cut_map;
   double resolution_mm = 0.0;
+  /// The resolution rule's pixel (0 when resolution_mm was given): when resolution_mm is
+  /// larger, the pixel budget (AdaptiveParams::max_pixels) coarsened it.
+  double rule_resolution_mm = 0.0;
   double step_mm = 0.0;
   double target_engagement_deg = 0.0;
   double target_engagement_px = 0.0;
