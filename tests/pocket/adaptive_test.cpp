@@ -393,12 +393,8 @@ void expect_same_moves(const AdaptiveResult& a, const AdaptiveResult& b) {
 
 TEST(AdaptivePocket, SameInputSameToolpath) {
   const Pocket p = load("kirimoto_pocket.json");
-  Tool t;
-  t.diameter_mm = 10.0;
-  AdaptiveParams ap;
-  ap.stepover_mm = 2.0;
-  auto a = adaptive_pocket(p, t, ap);
-  auto b = adaptive_pocket(p, t, ap);
+  auto a = generate(p, 10.0, 2.0);
+  auto b = generate(p, 10.0, 2.0);
   ASSERT_TRUE(a.ok() && b.ok());
   expect_same_moves(*a, *b);
 }
