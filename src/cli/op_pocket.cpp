@@ -57,6 +57,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.ramp_angle_deg = num(p, "ramp_angle");
   ap.helix_radius_mm = num(p, "helix_radius");
   ap.plunge_candidates = p.at("plunge_candidates").get<int>();
+  ap.straight_plunge = p.at("straight_plunge").get<bool>();
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
   auto r = adaptive_pocket(*pocket, *in.tool, ap, in.ctx ? *in.ctx : default_context());
@@ -82,6 +83,8 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["layers"] = r->layers;
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;
+  // Said only when there is one: it needs a centre-cutting end mill.
+  if (r->straight_plunges > 0) out.summary["straight_plunges"] = r->straight_plunges;
   if (r->candidate_time_s.size() > 1) {
     out.summary["plunge_candidate_time_s"] = r->candidate_time_s;
     out.summary["plunge_candidate_kept"] = r->chosen_candidate;
@@ -120,6 +123,10 @@ const OperationRegistrar kRegistrar(Operation{
                          "helix radius, mm (0 = 0.3 x diameter, or what fits)"),
             Param{"plunge_candidates", ParamType::kInteger, 1,
                   "plunge points tried along the medial axis (the fastest path wins)", false},
+            Param{"straight_plunge", ParamType::kBool, true,
+                  "where no helix or ramp fits, go straight down at the plunge feed (needs a "
+                  "centre-cutting end mill); off: leave that material (material_left_mm2)",
+                  false},
             Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
             number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),
             Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},

@@ -545,6 +545,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const double sd = params.stepdown_mm > 0.0 ? params.stepdown_mm : total;
   const int layers = std::max(1, static_cast<int>(std::ceil(total / sd - 1e-9)));
   res.layers = layers;
+  res.straight_plunges = e.solid ? 1 : 0;
+  for (std::size_t k = 0; k < lp.entry.size(); ++k)
+    if (lp.jump[k] && lp.entry[k] >= 0 && order[static_cast<std::size_t>(lp.entry[k])].solid)
+      ++res.straight_plunges;
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;

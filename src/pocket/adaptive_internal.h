@@ -29,6 +29,7 @@ struct Model {
   int sigma = -1;
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
   double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
+  bool straight_plunge = true;     ///< AdaptiveParams::straight_plunge
   PolygonSet region;               ///< the pocket (outer ring, islands), exact
   double wall_stock_mm = 0.0;      ///< left on walls and islands
   double pocket_area_mm2 = 0.0;
@@ -47,9 +48,11 @@ struct Entry {
   Vec2 ramp_a, ramp_b;           ///< ramp segment (tool centre), when a ramp
   Vec2 start;                    ///< where the adaptive moves begin
   double start_angle_rad = 0.0;  ///< their first direction
-  /// Straight down at the plunge feed, no helix or ramp: only for a new entry where the
-  /// inner half of the tool's disk is over cleared floor (the end teeth near the rim cut).
+  /// Straight down at the plunge feed, no helix or ramp: for a new entry where the inner
+  /// half of the tool's disk is over cleared floor (the end teeth near the rim cut), or,
+  /// with `solid`, where no helix or ramp fits (AdaptiveParams::straight_plunge).
   bool plunge = false;
+  bool solid = false;  ///< a plunge into uncut material
 };
 
 /// Up to `count` entries at maxima of the medial axis, best (widest) first.

@@ -328,11 +328,75 @@ TEST(AdaptivePocket, ToolTooLargeAndNoEntryAreNamedErrors) {
   auto r = adaptive_pocket(narrow, t, AdaptiveParams{});
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), Error::kToolTooLarge);
-  // A square just wider than the tool: it fits, but there is no room to helix or ramp.
+  // A square just wider than the tool: it fits, but there is no room to helix or ramp; with
+  // straight plunges turned off that is an error.
   Pocket tight = make_pocket({{0, 0}, {6.25, 0}, {6.25, 6.25}, {0, 6.25}}, {}, "tight").value();
-  auto q = adaptive_pocket(tight, t, AdaptiveParams{});
+  AdaptiveParams no_plunge;
+  no_plunge.straight_plunge = false;
+  auto q = adaptive_pocket(tight, t, no_plunge);
   ASSERT_FALSE(q.ok());
   EXPECT_EQ(q.status().code(), Error::kNoEntryFound) << q.status().to_string();
+}
+
+// The same square with the default: the tool goes straight down at its centre (no helix of
+// 0.1 mm would cut anything else) and leaves nothing it can reach.
+TEST(AdaptivePocket, PocketBarelyWiderThanTheToolIsEnteredStraightDown) {
+  Pocket tight = make_pocket({{0, 0}, {6.25, 0}, {6.25, 6.25}, {0, 6.25}}, {}, "tight").value();
+  const Outcome o = run(tight, 6.0, 0.6);
+  EXPECT_EQ(o.result.straight_plunges, 1);
+  EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(o.sweep.residual_mm2, kResidualPerCornerMm2 * 4);
+  const auto plunge = std::find_if(o.result.toolpath.moves.begin(), o.result.toolpath.moves.end(),
+                                   [](const Move& mv) { return mv.kind == MoveKind::kPlunge; });
+  ASSERT_NE(plunge, o.result.toolpath.moves.end());
+  EXPECT_NEAR(plunge->end.x, 3.125, 0.1);
+  EXPECT_NEAR(plunge->end.y, 3.125, 0.1);
+}
+
+// Pocket 144 of bench/pocket_random.sh: a ø20 in a seven-pointed outline with two islands,
+// simulated with the rule's 0.25 mm pixels. Material beside the round island is reached only
+// from a patch of tool centres with 0.15 mm of room beyond the radius: less than the 0.75
+// pixel of room the new-entry search's medial axis asks for, and no helix or ramp fits in
+// it. It was left (179 mm^2 by the sweep). A straight plunge into it, placed on the medial
+// axis of every free centre and checked against the walls by exact geometry, now takes it.
+// What the sweep still finds (17 mm^2) lies where no pixel centre is free at 0.25 mm
+// (at --resolution 0.1 the same pocket is cleared to 1 mm^2 without a plunge).
+TEST(AdaptivePocket, RandomPocketWithMaterialBehindAPatchOfCentresThinnerThanAPixel) {
+  const Pocket p = load("random_seed144.json");
+  const Outcome o = run(p, 20.0, 6.0);
+  EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
+  EXPECT_GE(o.result.straight_plunges, 1);
+  EXPECT_LE(o.sweep.residual_mm2, 25.0);
+}
+
+// A round chamber 0.1 mm wider than the tool, behind a neck half as wide as the tool (found
+// by bench/pocket_random.sh, seed 118: 28.6 mm^2 left, a whole disk). No helix or ramp fits
+// in it and no cleared floor leads there; the default goes straight down into it, and the
+// sweep finds nothing left that the tool reaches. Turned off, the chamber is left, and the
+// summary's material_left says so.
+TEST(AdaptivePocket, ChamberWithNoRoomToHelixIsEnteredStraightDown) {
+  const double cr = 3.1, cx = 43.0 + cr, half_neck = 1.5;
+  const double a0 = std::atan2(-half_neck, -std::sqrt(cr * cr - half_neck * half_neck));
+  Ring outer{{0, 0}, {40, 0}, {40, 15 - half_neck}};
+  for (int k = 0; k <= 240; ++k) {               // the chamber's far side, counter-clockwise
+    const double a = a0 - 2.0 * a0 * k / 240.0;  // from a0 (about -150 deg) to -a0
+    outer.push_back({cx + cr * std::cos(a), 15 + cr * std::sin(a)});
+  }
+  outer.insert(outer.end(), {{40, 15 + half_neck}, {40, 30}, {0, 30}});
+  const Pocket p = make_pocket(outer, {}, "rectangle and chamber").value();
+  const Outcome o = run(p, 6.0, 0.6);
+  EXPECT_EQ(o.result.straight_plunges, 1);
+  expect_correct(p, o, -1.0);
+  Tool t;
+  t.diameter_mm = 6.0;
+  AdaptiveParams off;
+  off.stepover_mm = 0.6;
+  off.depth_mm = 3.0;
+  off.straight_plunge = false;
+  auto left = adaptive_pocket(p, t, off);
+  ASSERT_TRUE(left.ok()) << left.status().to_string();
+  EXPECT_EQ(left->straight_plunges, 0);
+  EXPECT_GT(left->material_left_mm2, 20.0);  // the chamber: about pi 3.1^2 = 30 mm^2
 }
 
 // A pocket too large for its tool at the resolution rule's pixel size (a 250 mm square cut

@@ -56,6 +56,11 @@ struct AdaptiveParams {
   double helix_radius_mm = 0.0;
   /// Plunge points tried along the medial axis; the fastest toolpath wins.
   int plunge_candidates = 1;
+  /// Where the tool fits but has no room for a helix or a ramp (a lobe behind a neck
+  /// narrower than the tool, a pocket barely wider than it), go straight down into the
+  /// material at the plunge feed, which needs a centre-cutting end mill. false: such
+  /// material is left (material_left_mm2), and a pocket with no other way in is an error.
+  bool straight_plunge = true;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
   double simplify_tolerance_mm = 0.0;
@@ -110,11 +115,15 @@ struct AdaptiveResult {
   int trochoid_groups = 0;
   int boundary_groups = 0;
   double material_left_mm2 = 0.0;  ///< reachable material the path leaves, per the simulation
+  /// Entries straight down into uncut material (AdaptiveParams::straight_plunge): places, not
+  /// counting their repeats on lower layers.
+  int straight_plunges = 0;
   double gouge_steps = 0;  ///< steps whose disk reaches past a wall (exact geometry; 0 expected)
 };
 
 /// Computes the adaptive pocket toolpath. Errors: kBadParameter, kToolTooLarge (the tool
-/// fits nowhere in the pocket), kNoEntryFound (it fits but cannot helix or ramp in),
+/// fits nowhere in the pocket), kNoEntryFound (it fits but cannot helix or ramp in, and
+/// AdaptiveParams::straight_plunge is off),
 /// kCancelled.
 Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
                                        const AdaptiveParams& params,
