@@ -280,6 +280,18 @@ TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
   EXPECT_GE(o.sweep.within_20pct, 0.82);
 }
 
+// Pocket 132 of bench/pocket_random.sh, ø16 at 15 %: the tool centres' region ends in a
+// wedge between the bottom wall and the corner of an island 15.6 mm from it (less than the
+// tool's 16). The path's nearest point was 0.9 mm from the wedge's tip, and neither the
+// straight way there nor one through its midpoint kept off the corner's arc: 11.5 mm^2 left
+// in the sweep. The visit now goes by more points pushed out of the walls.
+TEST(AdaptivePocket, RandomPocketWhoseCentresEndInAWedgeRoundAnIslandCorner) {
+  const Pocket p = load("random_seed132.json");
+  const Outcome o = run(p, 16.0, 2.4);
+  expect_correct(p, o, -1.0);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
