@@ -58,6 +58,23 @@ TEST(PocketCli, PlungeCandidatesAreReportedAndThreadsChangeNothing) {
             std::min_element(times.begin(), times.end()) - times.begin());
 }
 
+// A square just wider than the tool: by default it is entered straight down and the summary
+// says so; with --no-straight-plunge there is no way in, a bad-input exit that writes nothing.
+TEST(PocketCli, StraightPlungeIsCountedAndCanBeTurnedOff) {
+  testing::TempDir dir;
+  dir.write("tight.json", R"({"outer": [[0, 0], [6.25, 0], [6.25, 6.25], [0, 6.25]]})");
+  const std::string common = "pocket " + dir.file("tight.json") + " --tool flat:6 --depth 3 ";
+  const auto on =
+      testing::run_swarf(common + "-o " + dir.file("on.nc") + " --report " + dir.file("rep"));
+  ASSERT_EQ(on.status, 0) << on.out;
+  const auto j = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
+  EXPECT_EQ(j.at("straight_plunges").get<int>(), 1);
+  const auto off = testing::run_swarf(common + "--no-straight-plunge -o " + dir.file("off.nc"));
+  EXPECT_EQ(off.status, 2) << off.out;
+  EXPECT_NE(off.out.find("no entry found"), std::string::npos) << off.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("off.nc")));
+}
+
 TEST(PocketCli, OpenOutlineIsABadInputExitNamingTheFile) {
   testing::TempDir dir;
   dir.write("open.svg", "<svg><polyline points=\"0,0 10,0 10,10\"/></svg>");
