@@ -207,6 +207,8 @@ Result<std::string> execute(const Operation& op, OperationInput input, const Out
     SWARF_RETURN_IF_ERROR(write_file_atomic(path, bytes));
 
   std::string line = format_summary(op.name, res.summary);
+  for (const std::string& note : res.notes)
+    line += "\n  note: " + note;
   if (!out.gcode.empty()) line += "\n  wrote " + out.gcode;
   if (!out.csv.empty()) line += "\n  wrote " + out.csv;
   if (!out.report.empty()) line += "\n  wrote " + out.report + "/summary.json";

@@ -84,7 +84,12 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;
   // Said only when there is one: it needs a centre-cutting end mill.
-  if (r->straight_plunges > 0) out.summary["straight_plunges"] = r->straight_plunges;
+  if (r->straight_plunges > 0) {
+    out.summary["straight_plunges"] = r->straight_plunges;
+    out.notes.push_back(std::to_string(r->straight_plunges) +
+                        " straight plunge(s) where no helix or ramp fits: the end mill must be "
+                        "centre-cutting (--no-straight-plunge leaves that material instead)");
+  }
   if (r->candidate_time_s.size() > 1) {
     out.summary["plunge_candidate_time_s"] = r->candidate_time_s;
     out.summary["plunge_candidate_kept"] = r->chosen_candidate;

@@ -62,6 +62,8 @@ struct OperationOutput {
   std::optional<std::string> primary_output;
   /// Drawn under the toolpath in the SVG plot.
   PolygonSet plot_background;
+  /// What the user must not miss, one line each, printed after the summary line.
+  std::vector<std::string> notes;
 };
 
 struct Operation {

@@ -69,6 +69,7 @@ TEST(PocketCli, StraightPlungeIsCountedAndCanBeTurnedOff) {
   ASSERT_EQ(on.status, 0) << on.out;
   const auto j = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
   EXPECT_EQ(j.at("straight_plunges").get<int>(), 1);
+  EXPECT_NE(on.out.find("centre-cutting"), std::string::npos) << on.out;
   const auto off = testing::run_swarf(common + "--no-straight-plunge -o " + dir.file("off.nc"));
   EXPECT_EQ(off.status, 2) << off.out;
   EXPECT_NE(off.out.find("no entry found"), std::string::npos) << off.out;
