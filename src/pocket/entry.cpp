@@ -162,6 +162,16 @@ Vec2 axis_point(const Model& m, int idx) {
   return m.grid.to_world(i, j);
 }
 
+// Straight down at c, the moves starting there; `solid`: into uncut material.
+Entry plunge_at(Vec2 c, bool solid) {
+  Entry e;
+  e.centre = c;
+  e.start = c;
+  e.plunge = true;
+  e.solid = solid;
+  return e;
+}
+
 // The entry at the medial-axis pixel idx: a helix where one of at least min_helix fits,
 // else a ramp along the longest straight line of free centres through it (5 degree
 // directions); false when neither fits.
@@ -243,12 +253,7 @@ Result<std::vector<Entry>> find_entries(const Model& m, int count) {
     // No room to helix or ramp anywhere: straight down at the widest point (a pocket barely
     // wider than the tool). A helix of the few hundredths of a millimetre that fit would
     // cut the same full circle.
-    Entry e;
-    e.centre = axis_point(m, order.front());
-    e.start = e.centre;
-    e.plunge = true;
-    e.solid = true;
-    out.push_back(e);
+    out.push_back(plunge_at(axis_point(m, order.front()), true));
   }
   if (out.empty()) {
     const Vec2 c = axis_point(m, order.front());
@@ -295,10 +300,7 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
     const int px = stock.material_in_disk(c, r);
     if (px > best_px) {
       best_px = px;
-      e = Entry{};
-      e.centre = c;
-      e.start = c;
-      e.plunge = true;
+      e = plunge_at(c, false);
       found = true;
     }
   }
@@ -341,13 +343,9 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
     const Vec2 c = axis_point(m, idx);
     const int px = stock.material_in_disk(c, r);
     if (px <= best_px) continue;
-    if (segment_distance_to_rings(m.region, c, c) < r + m.wall_stock_mm) continue;
+    if (distance_to_rings(m.region, c) < r + m.wall_stock_mm) continue;
     best_px = px;
-    e = Entry{};
-    e.centre = c;
-    e.start = c;
-    e.plunge = true;
-    e.solid = true;
+    e = plunge_at(c, true);
     found = true;
   }
   if (found) aim_at_material(m, stock, e);
