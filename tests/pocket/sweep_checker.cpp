@@ -53,8 +53,14 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
   for (const Move& m : tp.moves) {
     const Vec3 from = at;
     at = m.end;
-    if (std::abs(m.end.z - zmin) > 1e-6 || std::abs(from.z - zmin) > 1e-6) continue;
+    if (std::abs(m.end.z - zmin) > 1e-6) continue;
     if (m.kind == MoveKind::kRapid) continue;
+    if (std::abs(from.z - zmin) > 1e-6) {
+      // Down to the floor (a plunge, a helix's or a ramp's last piece): the disk where it
+      // arrives is cut even when no floor move follows (a plunge straight back up).
+      out.push_back({m.end.xy(), {1.0, 0.0}, 0.0, true});
+      continue;
+    }
     const bool entry = m.kind != MoveKind::kFeed;
     if (m.is_arc()) {
       const Vec2 c = m.center.xy();
