@@ -571,18 +571,24 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
       const Vec3 end = to_vec3(lp.pts[b], z);
+      // A retract goes straight up from where the tool is: after a straight plunge the
+      // path's point there may have been snapped to a wall offset a few hundredths away, and
+      // a rapid towards it would move sideways at the floor.
+      const auto retract_here = [&] {
+        const Vec3 here = tp.moves.back().end;
+        tp.moves.push_back(
+            make_move(MoveKind::kRapid, {here.x, here.y, params.clearance_z_mm}, 0, false));
+      };
       if (lp.jump[a] && lp.entry[a] >= 0) {
         ++retracts;
-        tp.moves.push_back(
-            make_move(MoveKind::kRapid, to_vec3(lp.pts[a], params.clearance_z_mm), 0, false));
+        retract_here();
         const Entry& ne = order[static_cast<std::size_t>(lp.entry[a])];
         entry_moves(tp, ne, params, z_prev + 1.0, z);
         continue;
       }
       if (lp.jump[a]) {
         ++retracts;
-        tp.moves.push_back(
-            make_move(MoveKind::kRapid, to_vec3(lp.pts[a], params.clearance_z_mm), 0, false));
+        retract_here();
         tp.moves.push_back(
             make_move(MoveKind::kRapid, to_vec3(lp.pts[b], params.clearance_z_mm), 0, false));
         tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(lp.pts[b], z_prev + 1.0), 0, false));

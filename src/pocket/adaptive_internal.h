@@ -38,6 +38,9 @@ struct Model {
   BitImage forbidden;  ///< pixel centres the tool disk may not cover
   BitImage material;   ///< initial material: pocket pixels some free tool position covers
   std::vector<float> clearance_sq;  ///< squared distance to the nearest forbidden pixel, px^2
+  /// Exact tool positions clear of the walls (wall stock included) in patches too narrow to
+  /// hold a free pixel centre; their disks are material, and straight plunges may go there.
+  std::vector<Vec2> tight_centres;
 };
 
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& params);

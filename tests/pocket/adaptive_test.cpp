@@ -380,6 +380,48 @@ TEST(AdaptivePocket, RandomPocketWithMaterialBehindAPatchOfCentresThinnerThanAPi
   EXPECT_LE(o.sweep.residual_mm2, 2.0);
 }
 
+// Pocket 317 of bench/pocket_random.sh: a ø20 between a square island and a round wall 20.2
+// mm apart fits along a patch of tool centres 0.22 mm wide (0.11 mm of room each side), in
+// which no pixel centre of the 0.25 mm simulation is free. The model sampled its free
+// positions at pixel centres only, so the 328 mm^2 beside the island were not even material:
+// left, and reported as cleared. The exact free positions between pixel centres now count
+// (make_model), and straight plunges there take that material.
+TEST(AdaptivePocket, RandomPocketWithMaterialReachedOnlyBetweenPixelCentres) {
+  const Pocket p = load("random_seed317.json");
+  auto r = generate(p, 20.0, 4.0);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  EXPECT_GE(r->straight_plunges, 1);
+  EXPECT_LE(r->material_left_mm2, 8.0);  // the generator's own count agrees with the sweep
+  // A 0.1 mm checker pixel: the pocket is 120 mm across.
+  const auto s =
+      testing::sweep_check(p.region, 10.0, r->toolpath, r->target_engagement_deg, 0.1, kWallTol);
+  std::printf("  residual %.2f mm2, gouge %.4f mm\n", s.residual_mm2, s.max_gouge_mm);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.residual_mm2, 6.0);
+}
+
+// The same in a straight channel: a ø10 beside an island 10.05 mm from the wall (0.025 mm of
+// room each side, the simulation pixel is 0.088 mm). The channel's middle is reached from
+// nowhere else; it was left whole (127 mm^2 by the sweep).
+TEST(AdaptivePocket, ChannelAHairWiderThanTheToolIsTakenByStraightPlunges) {
+  const Pocket p =
+      make_pocket({{0, 0}, {80, 0}, {80, 60}, {0, 60}},
+                  {{{20, 20}, {69.95, 20}, {69.95, 40}, {20, 40}}}, "80 x 60, channel 10.05 mm")
+          .value();
+  const Outcome o = run(p, 10.0, 1.0);
+  EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
+  EXPECT_GE(o.result.straight_plunges, 3);
+  EXPECT_LE(o.sweep.residual_mm2, kResidualPerCornerMm2 * 8);
+  // Every retract leaves the floor straight up. After a plunge the path's point there had
+  // been snapped to the wall offset 0.02 mm away, and the rapid went sideways at the floor.
+  const auto& mv = o.result.toolpath.moves;
+  for (std::size_t k = 1; k < mv.size(); ++k)
+    if (mv[k].kind == MoveKind::kRapid && mv[k - 1].end.z < 0.0) {
+      EXPECT_EQ(mv[k].end.x, mv[k - 1].end.x) << "move " << k;
+      EXPECT_EQ(mv[k].end.y, mv[k - 1].end.y) << "move " << k;
+    }
+}
+
 // A round chamber 0.1 mm wider than the tool, behind a neck half as wide as the tool (found
 // by bench/pocket_random.sh, seed 118: 28.6 mm^2 left, a whole disk). No helix or ramp fits
 // in it and no cleared floor leads there; the default goes straight down into it, and the
