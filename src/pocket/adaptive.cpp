@@ -66,6 +66,7 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
 namespace {
 
 using pocket::Entry;
+using pocket::kWallClearanceMm;
 using pocket::LinkedPath;
 using pocket::Model;
 
@@ -107,7 +108,6 @@ double angle_of(const Model& m, int px, double len) {
 // Within +-20 % by the sweep: L 91.9 -> 92.2 %, Kiri:Moto 94.6 -> 95.1 %, star 94.0 ->
 // 94.4 %, PCB-vice bar 92.3 -> 92.8 %, six islands 78.8 -> 79.6 %; residual unchanged
 // (bench/RESULTS-pocket.md, session 10).
-constexpr double kWallClearanceMm = 0.002;
 constexpr double kSnapRidingPx = 1.25, kSnapLastPx = 2.0, kLastPassReach = 0.1;
 
 //
