@@ -121,13 +121,13 @@ constexpr double kSnapRidingPx = 1.25, kSnapLastPx = 2.0, kLastPassReach = 0.1;
 void push_out_of_walls(const Model& m, Vec2& p, double on) {
   const double reach = m.radius_mm + m.wall_stock_mm;
   Vec2 best = p;
-  double best_d = pocket::distance_to_rings(m.region, p);
+  double best_d = m.walls.distance(p);
   Vec2 c = p, q_prev, n_prev;
   bool have_prev = false;
   for (int round = 0; round < 16 && best_d < reach - 1e-9; ++round) {
-    const Vec2 q = pocket::nearest_on_rings(m.region, c);
+    const Vec2 q = m.walls.nearest(c);
     const double d = distance(c, q);
-    if (d < 1e-9 || !pocket::point_in_region(m.region, c)) break;
+    if (d < 1e-9 || !m.walls.inside(c)) break;
     const Vec2 n = (c - q) / d;
     Vec2 next = q + n * on;
     // Alternating projections crawl where the two walls meet at a small angle (a ø12 point
@@ -144,8 +144,8 @@ void push_out_of_walls(const Model& m, Vec2& p, double on) {
     n_prev = n;
     have_prev = true;
     c = next;
-    const double dc = pocket::distance_to_rings(m.region, c);
-    if (dc > best_d && pocket::point_in_region(m.region, c)) {
+    const double dc = m.walls.distance(c);
+    if (dc > best_d && m.walls.inside(c)) {
       best = c;
       best_d = dc;
     }
@@ -161,7 +161,7 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
   std::vector<Vec2> foot(n);
   std::vector<double> dist(n);
   for (std::size_t k = 0; k < n; ++k) {
-    foot[k] = pocket::nearest_on_rings(m.region, lp.pts[k]);
+    foot[k] = m.walls.nearest(lp.pts[k]);
     dist[k] = distance(lp.pts[k], foot[k]);
   }
   // The points near a wall, by the cell of their foot on it (cells of kLastPassReach x R).
@@ -190,7 +190,7 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
     if (d < 1e-9 || d >= on + wide || (d >= on + riding && !last_pass(k))) continue;
     Vec2& p = lp.pts[k];
     const Vec2 s = foot[k] + (p - foot[k]) * (on / d);
-    if (pocket::distance_to_rings(m.region, s) >= on - 1e-9 && pocket::point_in_region(m.region, s))
+    if (m.walls.distance(s) >= on - 1e-9 && m.walls.inside(s))
       p = s;
     else if (d < reach - 1e-9)
       push_out_of_walls(m, p, on);
@@ -244,13 +244,9 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
         reached = std::min(reached, pocket::point_segment_distance(t, lp.pts[k], lp.pts[k + 1]));
     }
     if (reached < 0.05 * m.h || best > near) continue;
-    if (pocket::distance_to_rings(m.region, t) < reach - 1e-9 ||
-        !pocket::point_in_region(m.region, t))
-      continue;
+    if (m.walls.distance(t) < reach - 1e-9 || !m.walls.inside(t)) continue;
     const Vec2 from = lp.pts[at];
-    auto clear = [&](Vec2 a, Vec2 b) {
-      return pocket::segment_distance_to_rings(m.region, a, b) >= reach - 1e-7;
-    };
+    auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-7; };
     // The straight way, else one through 1, 3, 7 or 15 points spread along it and pushed
     // out of the walls. The straight way grazes the wall it runs along where the chord
     // between two points on the offset of a convex corner dips inside it (0.3 um on an L
@@ -264,7 +260,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
       for (int q = 1; q <= pieces && ok; ++q) {
         Vec2 p = q == pieces ? t : from + (t - from) * (static_cast<double>(q) / pieces);
         if (q < pieces) push_out_of_walls(m, p, on);
-        ok = pocket::point_in_region(m.region, p) && clear(prev, p);
+        ok = m.walls.inside(p) && clear(prev, p);
         way.push_back(p);
         prev = p;
       }
@@ -305,8 +301,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
 // A tool position whose disk reaches past a wall or into an island, by exact geometry (the
 // pixel test would flag the snapped passes, which keep 2 um off the wall, not half a pixel).
 bool gouges_exactly(const Model& m, Vec2 c) {
-  return !pocket::point_in_region(m.region, c) ||
-         pocket::distance_to_rings(m.region, c) < m.radius_mm + m.wall_stock_mm - 1e-6;
+  return !m.walls.inside(c) || m.walls.distance(c) < m.radius_mm + m.wall_stock_mm - 1e-6;
 }
 
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
@@ -526,7 +521,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const double tol = params.simplify_tolerance_mm > 0.0 ? params.simplify_tolerance_mm : 0.25 * m.h;
   const double reach = m.radius_mm + m.wall_stock_mm;
   auto chord_ok = [&](std::size_t a, std::size_t b) {
-    return pocket::segment_distance_to_rings(m.region, lp.pts[a], lp.pts[b]) >= reach - 1e-7;
+    return m.walls.segment_distance(lp.pts[a], lp.pts[b]) >= reach - 1e-7;
   };
   std::vector<std::size_t> keep;
   std::size_t run = 0;
@@ -608,7 +603,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through
       // its middle pushed off the wall to the same kWallClearanceMm as the wall passes.
       std::vector<Vec2> via;
-      pocket::keep_off_rings(m.region, reach, kWallClearanceMm, lp.pts[a], lp.pts[b], via);
+      pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[a], lp.pts[b], via);
       for (const Vec2& v : via) {
         Move piece = mv;
         piece.end = to_vec3(v, z);

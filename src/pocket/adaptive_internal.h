@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pocket/pixel_stock.h"
+#include "pocket/wall_index.h"
 #include "swarf/core/context.h"
 #include "swarf/pocket/adaptive.h"
 
@@ -35,6 +36,7 @@ struct Model {
   double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
   bool straight_plunge = true;     ///< AdaptiveParams::straight_plunge
   PolygonSet region;               ///< the pocket (outer ring, islands), exact
+  WallIndex walls;                 ///< region's edges on a grid, for the exact-geometry checks
   double wall_stock_mm = 0.0;      ///< left on walls and islands
   double pocket_area_mm2 = 0.0;
   Grid grid;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "pocket/geometry.h"
+#include "pocket/wall_index.h"
 #include "swarf/polygon/polygon.h"
 
 namespace swarf {
@@ -68,6 +69,7 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
                                             std::to_string(tool.diameter_mm) +
                                             " mm tool fits nowhere in the pocket");
   // Rings per connected part of the free region, level 0 at the wall.
+  const pocket::WallIndex walls(pocket.region);
   std::vector<Loop> loops;
   const auto parts = connected_parts(free_region);
   for (std::size_t pi = 0; pi < parts.size(); ++pi) {
@@ -89,7 +91,7 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
           for (std::size_t k = 0; k < l.pts.size(); ++k) {
             kept.push_back(l.pts[k]);
             via.clear();
-            pocket::keep_off_rings(pocket.region, r + p.wall_stock_mm, 0.002, l.pts[k],
+            pocket::keep_off_walls(walls, r + p.wall_stock_mm, 0.002, l.pts[k],
                                    l.pts[(k + 1) % l.pts.size()], via);
             kept.insert(kept.end(), via.begin(), via.end());
           }

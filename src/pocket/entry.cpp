@@ -77,7 +77,7 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
     if (near.get(i, j)) continue;
     const Vec2 p = m.grid.to_world(i, j);
     Vec2 best = p;
-    double best_d = distance_to_rings(m.region, p);
+    double best_d = m.walls.distance(p);
     for (double step = 0.5 * m.h; step > m.h / 64.0; step *= 0.5) {
       bool moved = true;
       while (moved) {
@@ -86,7 +86,7 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
           const double a = kPi / 4.0 * k;
           const Vec2 q = best + Vec2{std::cos(a), std::sin(a)} * step;
           if (std::fabs(q.x - p.x) > 1.5 * m.h || std::fabs(q.y - p.y) > 1.5 * m.h) continue;
-          const double d = distance_to_rings(m.region, q);
+          const double d = m.walls.distance(q);
           if (d > best_d) {
             best_d = d;
             best = q;
@@ -95,7 +95,7 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
         }
       }
     }
-    if (best_d < need || !point_in_region(m.region, best)) continue;
+    if (best_d < need || !m.walls.inside(best)) continue;
     int unreached = 0;
     for_disk(m.grid, best, m.radius_mm, [&](int pi, int pj) {
       unreached += m.pocket.get(pi, pj) && !m.forbidden.get(pi, pj) && !reach.get(pi, pj);
@@ -177,6 +177,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.forbidden = BitImage(m.grid.width, m.grid.height);
   const double keep = p.wall_stock_mm + 0.5 * m.h;
   m.region = pocket.region;
+  m.walls = WallIndex(m.region);
   m.wall_stock_mm = p.wall_stock_mm;
   for (int j = 0; j < m.grid.height; ++j)
     for (int w = 0; w < m.pocket.words_per_row(); ++w)
@@ -420,7 +421,7 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
     const Vec2 c = axis_point(m, idx);
     const int px = stock.material_in_disk(c, r);
     if (px <= best_px) continue;
-    if (distance_to_rings(m.region, c) < r + m.wall_stock_mm + kWallClearanceMm) continue;
+    if (m.walls.distance(c) < r + m.wall_stock_mm + kWallClearanceMm) continue;
     best_px = px;
     e = plunge_at(c, true);
     found = true;

@@ -33,17 +33,12 @@ bool point_in_region(const PolygonSet& region, Vec2 p) {
   return true;
 }
 
-namespace {
-
-// The point of segment ab nearest to p (a for a zero-length segment).
 Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double l2 = norm_sq(ab);
   const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
   return a + ab * t;
 }
-
-}  // namespace
 
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return distance(p, nearest_on_segment(p, a, b));

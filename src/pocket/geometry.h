@@ -17,6 +17,8 @@ double ring_area(const Ring& ring);
 bool point_in_ring(const Ring& ring, Vec2 p);
 /// Inside the outer ring and outside every island (rings[0] outer, rings[1..] islands).
 bool point_in_region(const PolygonSet& region, Vec2 p);
+/// The point of segment ab nearest to p (a for a zero-length segment).
+Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b);
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
 /// Distance from p to the line through a and b (to a when they coincide): the flatness
 /// measure of curve flattening (chord error).

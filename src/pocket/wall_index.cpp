@@ -1,0 +1,255 @@
+#include "pocket/wall_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pocket/geometry.h"
+
+namespace swarf::pocket {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Below this many edges the plain loops are as quick as any index.
+constexpr std::size_t kMinIndexedEdges = 64;
+constexpr int kMaxCellsPerSide = 1024;
+
+// Squared gap between the boxes of segments (a, b) and (c, e); 0 when they overlap.
+double box_gap_sq(Vec2 lo, Vec2 hi, Vec2 c, Vec2 e) {
+  const double gx = std::max({std::min(c.x, e.x) - hi.x, 0.0, lo.x - std::max(c.x, e.x)});
+  const double gy = std::max({std::min(c.y, e.y) - hi.y, 0.0, lo.y - std::max(c.y, e.y)});
+  return gx * gx + gy * gy;
+}
+
+}  // namespace
+
+WallIndex::WallIndex(const PolygonSet& region) : region_(region) {
+  Box2 box;
+  for (std::uint32_t r = 0; r < region_.rings.size(); ++r) {
+    const Ring& ring = region_.rings[r];
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      edges_.push_back({ring[i], ring[(i + 1) % n]});
+      ray_edges_.push_back({ring[i], ring[(i + n - 1) % n]});
+      ring_of_.push_back(r);
+      box.add(ring[i]);
+    }
+  }
+  if (edges_.size() < kMinIndexedEdges || box.empty()) return;
+  // About one cell per edge over the box; the edges lie on the walls, so the cells they
+  // occupy hold a few each.
+  const Vec2 size = box.size();
+  cell_ = std::sqrt(std::max(size.x * size.y, 1e-12) / static_cast<double>(edges_.size()));
+  cell_ = std::max({cell_, size.x / kMaxCellsPerSide, size.y / kMaxCellsPerSide, 1e-9});
+  origin_ = box.min;
+  nx_ = static_cast<int>(std::floor(size.x / cell_)) + 1;
+  ny_ = static_cast<int>(std::floor(size.y / cell_)) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  // The cells an edge passes through, row by row (its x range within each row's band,
+  // widened by a margin so that rounding never drops a cell), not its whole box: a long
+  // diagonal wall would otherwise be listed in a square of cells it never comes near.
+  auto cells_of = [&](Vec2 a, Vec2 b, auto&& fn) {
+    const double eps = 1e-9 * cell_;
+    const double ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
+    const int j0 =
+        std::clamp(static_cast<int>(std::floor((ylo - eps - origin_.y) / cell_)), 0, ny_ - 1);
+    const int j1 =
+        std::clamp(static_cast<int>(std::floor((yhi + eps - origin_.y) / cell_)), 0, ny_ - 1);
+    for (int j = j0; j <= j1; ++j) {
+      double xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
+      if (a.y != b.y) {
+        const double y0 = std::max(ylo, origin_.y + j * cell_);
+        const double y1 = std::min(yhi, origin_.y + (j + 1) * cell_);
+        const double t0 = std::clamp((y0 - a.y) / (b.y - a.y), 0.0, 1.0);
+        const double t1 = std::clamp((y1 - a.y) / (b.y - a.y), 0.0, 1.0);
+        const double x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
+        xlo = std::max(xlo, std::min(x0, x1));
+        xhi = std::min(xhi, std::max(x0, x1));
+      }
+      const int i0 =
+          std::clamp(static_cast<int>(std::floor((xlo - eps - origin_.x) / cell_)), 0, nx_ - 1);
+      const int i1 =
+          std::clamp(static_cast<int>(std::floor((xhi + eps - origin_.x) / cell_)), 0, nx_ - 1);
+      for (int i = i0; i <= i1; ++i)
+        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(i));
+    }
+  };
+  start_.assign(ncell + 1, 0);
+  for (const Edge& e : edges_)
+    cells_of(e.a, e.b, [&](std::size_t c) { ++start_[c + 1]; });
+  for (std::size_t c = 0; c < ncell; ++c)
+    start_[c + 1] += start_[c];
+  ids_.resize(start_.back());
+  {
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t k = 0; k < edges_.size(); ++k)
+      cells_of(edges_[k].a, edges_[k].b, [&](std::size_t c) { ids_[fill[c]++] = k; });
+  }
+  // Rows for the inside test: every edge whose y range meets the row (same floor as a query
+  // point's row, so a point's row always lists the edges straddling its y).
+  auto row_of = [&](double y) {
+    return std::clamp(static_cast<int>(std::floor((y - origin_.y) / cell_)), 0, ny_ - 1);
+  };
+  row_start_.assign(static_cast<std::size_t>(ny_) + 1, 0);
+  for (const Edge& e : ray_edges_)
+    for (int j = row_of(std::min(e.a.y, e.b.y)); j <= row_of(std::max(e.a.y, e.b.y)); ++j)
+      ++row_start_[static_cast<std::size_t>(j) + 1];
+  for (int j = 0; j < ny_; ++j)
+    row_start_[static_cast<std::size_t>(j) + 1] += row_start_[static_cast<std::size_t>(j)];
+  row_ids_.resize(row_start_.back());
+  std::vector<std::uint32_t> fill(row_start_.begin(), row_start_.end() - 1);
+  for (std::uint32_t k = 0; k < ray_edges_.size(); ++k) {
+    const Edge& e = ray_edges_[k];
+    for (int j = row_of(std::min(e.a.y, e.b.y)); j <= row_of(std::max(e.a.y, e.b.y)); ++j)
+      row_ids_[fill[static_cast<std::size_t>(j)]++] = k;
+  }
+}
+
+template <class Fn>
+void WallIndex::for_cells(const Box2& b, Fn&& fn) const {
+  const double gx1 = origin_.x + nx_ * cell_, gy1 = origin_.y + ny_ * cell_;
+  if (b.max.x < origin_.x || b.max.y < origin_.y || b.min.x > gx1 || b.min.y > gy1) return;
+  const int i0 =
+      std::clamp(static_cast<int>(std::floor((b.min.x - origin_.x) / cell_)), 0, nx_ - 1);
+  const int i1 =
+      std::clamp(static_cast<int>(std::floor((b.max.x - origin_.x) / cell_)), 0, nx_ - 1);
+  const int j0 =
+      std::clamp(static_cast<int>(std::floor((b.min.y - origin_.y) / cell_)), 0, ny_ - 1);
+  const int j1 =
+      std::clamp(static_cast<int>(std::floor((b.max.y - origin_.y) / cell_)), 0, ny_ - 1);
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const std::size_t c =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
+        fn(ids_[k]);
+    }
+}
+
+// The searches below grow a square round the query (one cell, then doubling) until the best
+// answer found lies within it: every edge that could beat it meets the square, so it has
+// been seen, and the answer is the brute force's. The square covering the whole grid ends
+// the search too.
+double WallIndex::distance(Vec2 p) const {
+  if (!indexed()) return distance_to_rings(region_, p);
+  double d2 = kInf;
+  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
+  for (double r = cell_;; r *= 2.0) {
+    const Box2 b{p - Vec2{r, r}, p + Vec2{r, r}};
+    for_cells(b, [&](std::uint32_t k) {
+      const Edge& e = edges_[k];
+      if (box_gap_sq(p, p, e.a, e.b) >= d2) return;
+      d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, e.a, e.b)));
+    });
+    if (d2 <= r * r || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
+                        b.max.y >= grid.max.y))
+      break;
+  }
+  return std::sqrt(d2);
+}
+
+Vec2 WallIndex::nearest(Vec2 p) const {
+  if (!indexed()) return nearest_on_rings(region_, p);
+  double best = kInf;
+  std::uint32_t best_k = 0;
+  bool found = false;
+  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
+  for (double r = cell_;; r *= 2.0) {
+    const Box2 b{p - Vec2{r, r}, p + Vec2{r, r}};
+    for_cells(b, [&](std::uint32_t k) {
+      const Edge& e = edges_[k];
+      const double d2 = norm_sq(p - nearest_on_segment(p, e.a, e.b));
+      // The loop over all edges keeps the first of equals: the lowest index.
+      if (d2 < best || (d2 == best && k < best_k)) {
+        best = d2;
+        best_k = k;
+        found = true;
+      }
+    });
+    if (best <= r * r || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
+                          b.max.y >= grid.max.y))
+      break;
+  }
+  if (!found) return p;
+  return nearest_on_segment(p, edges_[best_k].a, edges_[best_k].b);
+}
+
+double WallIndex::segment_distance(Vec2 a, Vec2 b) const {
+  if (!indexed()) return segment_distance_to_rings(region_, a, b);
+  const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
+  double d = kInf;
+  bool touch = false;
+  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
+  for (double r = cell_;; r *= 2.0) {
+    const Box2 box{lo - Vec2{r, r}, hi + Vec2{r, r}};
+    for_cells(box, [&](std::uint32_t k) {
+      if (touch) return;
+      const Vec2 c = edges_[k].a, e = edges_[k].b;
+      if (box_gap_sq(lo, hi, c, e) >= d * d) return;
+      // Proper or touching crossing: distance 0 (as segment_distance_to_rings).
+      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
+      const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
+      if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+          ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0)) {
+        touch = true;
+        return;
+      }
+      d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
+                    point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+    });
+    if (touch) return 0.0;
+    if (d <= r || (box.min.x <= grid.min.x && box.min.y <= grid.min.y && box.max.x >= grid.max.x &&
+                   box.max.y >= grid.max.y))
+      break;
+  }
+  return d;
+}
+
+bool WallIndex::inside(Vec2 p) const {
+  if (!indexed()) return point_in_region(region_, p);
+  if (region_.rings.empty()) return false;
+  if (p.y < origin_.y || p.y > origin_.y + ny_ * cell_) return false;  // no edge straddles p.y
+  const int j = std::clamp(static_cast<int>(std::floor((p.y - origin_.y) / cell_)), 0, ny_ - 1);
+  // Parity per ring of the crossings to the right of p, as point_in_ring counts them: the
+  // outer ring odd, every island even. Bits for the first 64 rings, a vector beyond.
+  std::uint64_t odd = 0;
+  std::vector<char> odd_more;
+  if (region_.rings.size() > 64) odd_more.assign(region_.rings.size(), 0);
+  for (std::uint32_t q = row_start_[static_cast<std::size_t>(j)];
+       q < row_start_[static_cast<std::size_t>(j) + 1]; ++q) {
+    const std::uint32_t k = row_ids_[q];
+    const Vec2 a = ray_edges_[k].a, b = ray_edges_[k].b;
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < x) {
+        const std::uint32_t r = ring_of_[k];
+        if (r < 64)
+          odd ^= std::uint64_t{1} << r;
+        else
+          odd_more[r] ^= 1;
+      }
+    }
+  }
+  if (odd != 1) return false;  // outer ring even, or an island odd
+  return std::none_of(odd_more.begin(), odd_more.end(), [](char c) { return c != 0; });
+}
+
+void keep_off_walls(const WallIndex& walls, double reach, double clearance, Vec2 a, Vec2 b,
+                    std::vector<Vec2>& via, int depth) {
+  // keep_off_rings (geometry.cpp), step for step.
+  if (depth > 16) return;
+  const double need = std::min({reach, walls.distance(a), walls.distance(b)}) - 1e-7;
+  if (walls.segment_distance(a, b) >= need) return;
+  const Vec2 mid = (a + b) * 0.5;
+  const Vec2 w = walls.nearest(mid);
+  const double d = distance(mid, w);
+  if (d < 1e-9 || !walls.inside(mid)) return;  // not a corner: leave it
+  const Vec2 q = w + (mid - w) * ((reach + clearance) / d);
+  if (!walls.inside(q) || walls.distance(q) < reach) return;
+  keep_off_walls(walls, reach, clearance, a, q, via, depth + 1);
+  via.push_back(q);
+  keep_off_walls(walls, reach, clearance, q, b, via, depth + 1);
+}
+
+}  // namespace swarf::pocket
