@@ -159,6 +159,8 @@ Vec2 WallIndex::nearest(Vec2 p) const {
     const Box2 b{p - Vec2{r, r}, p + Vec2{r, r}};
     for_cells(b, [&](std::uint32_t k) {
       const Edge& e = edges_[k];
+      // Farther than the best by its box alone: it can neither beat it nor tie with it.
+      if (box_gap_sq(p, p, e.a, e.b) > best) return;
       const double d2 = norm_sq(p - nearest_on_segment(p, e.a, e.b));
       // The loop over all edges keeps the first of equals: the lowest index.
       if (d2 < best || (d2 == best && k < best_k)) {
