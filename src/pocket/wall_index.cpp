@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pocket/geometry.h"
+#include "swarf/core/grid_walk.h"
 
 namespace swarf::pocket {
 
@@ -45,36 +46,9 @@ WallIndex::WallIndex(const PolygonSet& region) : region_(region) {
   nx_ = static_cast<int>(std::floor(size.x / cell_)) + 1;
   ny_ = static_cast<int>(std::floor(size.y / cell_)) + 1;
   const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  // The cells an edge passes through, row by row (its x range within each row's band,
-  // widened by a margin so that rounding never drops a cell), not its whole box: a long
-  // diagonal wall would otherwise be listed in a square of cells it never comes near.
-  auto cells_of = [&](Vec2 a, Vec2 b, auto&& fn) {
-    const double eps = 1e-9 * cell_;
-    const double ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
-    const int j0 =
-        std::clamp(static_cast<int>(std::floor((ylo - eps - origin_.y) / cell_)), 0, ny_ - 1);
-    const int j1 =
-        std::clamp(static_cast<int>(std::floor((yhi + eps - origin_.y) / cell_)), 0, ny_ - 1);
-    for (int j = j0; j <= j1; ++j) {
-      double xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
-      if (a.y != b.y) {
-        const double y0 = std::max(ylo, origin_.y + j * cell_);
-        const double y1 = std::min(yhi, origin_.y + (j + 1) * cell_);
-        const double t0 = std::clamp((y0 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double t1 = std::clamp((y1 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
-        xlo = std::max(xlo, std::min(x0, x1));
-        xhi = std::min(xhi, std::max(x0, x1));
-      }
-      const int i0 =
-          std::clamp(static_cast<int>(std::floor((xlo - eps - origin_.x) / cell_)), 0, nx_ - 1);
-      const int i1 =
-          std::clamp(static_cast<int>(std::floor((xhi + eps - origin_.x) / cell_)), 0, nx_ - 1);
-      for (int i = i0; i <= i1; ++i)
-        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
-           static_cast<std::size_t>(i));
-    }
-  };
+  // The cells each edge passes through (grid_walk.h), not its whole box.
+  const CellGrid grid{origin_, cell_, nx_, ny_};
+  auto cells_of = [&](Vec2 a, Vec2 b, auto&& fn) { for_cells_on_segment(grid, a, b, fn); };
   start_.assign(ncell + 1, 0);
   for (const Edge& e : edges_)
     cells_of(e.a, e.b, [&](std::size_t c) { ++start_[c + 1]; });
@@ -127,25 +101,33 @@ void WallIndex::for_cells(const Box2& b, Fn&& fn) const {
     }
 }
 
-// The searches below grow a square round the query (one cell, then doubling) until the best
-// answer found lies within it: every edge that could beat it meets the square, so it has
-// been seen, and the answer is the brute force's. The square covering the whole grid ends
-// the search too.
+// The searches grow a square round the query (one cell, then doubling) until the best answer
+// found lies within it: every edge that could beat it meets the square, so it has been
+// seen, and the answer is the brute force's. The square covering the whole grid ends the
+// search too.
+template <class Visit, class Done>
+void WallIndex::grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done) const {
+  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
+  for (double r = cell_;; r *= 2.0) {
+    const Box2 b{lo - Vec2{r, r}, hi + Vec2{r, r}};
+    for_cells(b, visit);
+    if (done(r) || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
+                    b.max.y >= grid.max.y))
+      return;
+  }
+}
+
 double WallIndex::distance(Vec2 p) const {
   if (!indexed()) return distance_to_rings(region_, p);
   double d2 = kInf;
-  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
-  for (double r = cell_;; r *= 2.0) {
-    const Box2 b{p - Vec2{r, r}, p + Vec2{r, r}};
-    for_cells(b, [&](std::uint32_t k) {
-      const Edge& e = edges_[k];
-      if (box_gap_sq(p, p, e.a, e.b) >= d2) return;
-      d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, e.a, e.b)));
-    });
-    if (d2 <= r * r || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
-                        b.max.y >= grid.max.y))
-      break;
-  }
+  grow(
+      p, p,
+      [&](std::uint32_t k) {
+        const Edge& e = edges_[k];
+        if (box_gap_sq(p, p, e.a, e.b) >= d2) return;
+        d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, e.a, e.b)));
+      },
+      [&](double r) { return d2 <= r * r; });
   return std::sqrt(d2);
 }
 
@@ -154,25 +136,21 @@ Vec2 WallIndex::nearest(Vec2 p) const {
   double best = kInf;
   std::uint32_t best_k = 0;
   bool found = false;
-  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
-  for (double r = cell_;; r *= 2.0) {
-    const Box2 b{p - Vec2{r, r}, p + Vec2{r, r}};
-    for_cells(b, [&](std::uint32_t k) {
-      const Edge& e = edges_[k];
-      // Farther than the best by its box alone: it can neither beat it nor tie with it.
-      if (box_gap_sq(p, p, e.a, e.b) > best) return;
-      const double d2 = norm_sq(p - nearest_on_segment(p, e.a, e.b));
-      // The loop over all edges keeps the first of equals: the lowest index.
-      if (d2 < best || (d2 == best && k < best_k)) {
-        best = d2;
-        best_k = k;
-        found = true;
-      }
-    });
-    if (best <= r * r || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
-                          b.max.y >= grid.max.y))
-      break;
-  }
+  grow(
+      p, p,
+      [&](std::uint32_t k) {
+        const Edge& e = edges_[k];
+        // Farther than the best by its box alone: it can neither beat it nor tie with it.
+        if (box_gap_sq(p, p, e.a, e.b) > best) return;
+        const double d2 = norm_sq(p - nearest_on_segment(p, e.a, e.b));
+        // The loop over all edges keeps the first of equals: the lowest index.
+        if (d2 < best || (d2 == best && k < best_k)) {
+          best = d2;
+          best_k = k;
+          found = true;
+        }
+      },
+      [&](double r) { return best <= r * r; });
   if (!found) return p;
   return nearest_on_segment(p, edges_[best_k].a, edges_[best_k].b);
 }
@@ -182,30 +160,25 @@ double WallIndex::segment_distance(Vec2 a, Vec2 b) const {
   const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
   double d = kInf;
   bool touch = false;
-  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
-  for (double r = cell_;; r *= 2.0) {
-    const Box2 box{lo - Vec2{r, r}, hi + Vec2{r, r}};
-    for_cells(box, [&](std::uint32_t k) {
-      if (touch) return;
-      const Vec2 c = edges_[k].a, e = edges_[k].b;
-      if (box_gap_sq(lo, hi, c, e) >= d * d) return;
-      // Proper or touching crossing: distance 0 (as segment_distance_to_rings).
-      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
-      const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
-      if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
-          ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0)) {
-        touch = true;
-        return;
-      }
-      d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
-                    point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
-    });
-    if (touch) return 0.0;
-    if (d <= r || (box.min.x <= grid.min.x && box.min.y <= grid.min.y && box.max.x >= grid.max.x &&
-                   box.max.y >= grid.max.y))
-      break;
-  }
-  return d;
+  grow(
+      lo, hi,
+      [&](std::uint32_t k) {
+        if (touch) return;
+        const Vec2 c = edges_[k].a, e = edges_[k].b;
+        if (box_gap_sq(lo, hi, c, e) >= d * d) return;
+        // Proper or touching crossing: distance 0 (as segment_distance_to_rings).
+        const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
+        const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
+        if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+            ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0)) {
+          touch = true;
+          return;
+        }
+        d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
+                      point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+      },
+      [&](double r) { return touch || d <= r; });
+  return touch ? 0.0 : d;
 }
 
 bool WallIndex::inside(Vec2 p) const {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "swarf/core/grid_walk.h"
 #include "swarf/core/parallel.h"
 
 namespace swarf {
@@ -470,36 +471,11 @@ LevelEnvelope LevelEnvelope::build(const SliceFamily& fam, double cell_mm, int s
   e.nx_ = static_cast<int>(std::floor(box.size().x / e.cell_)) + 1;
   e.ny_ = static_cast<int>(std::floor(box.size().y / e.cell_)) + 1;
   const std::size_t ncell = static_cast<std::size_t>(e.nx_) * static_cast<std::size_t>(e.ny_);
-  // The cells an edge crosses, row by row: in each row the x-range of the edge's part in the
-  // row's band, widened by a margin so that rounding never drops a cell (a query relies on
-  // every cell an edge passes through listing it). Not its bounding box: a long diagonal edge
-  // (the side of a large chamfered or drafted part) would be listed in thousands of cells
-  // it never comes near, on every level, and every query there would test it.
-  auto cells = [&](Vec2 a, Vec2 b, auto&& fn) {
-    const double eps = 1e-9 * e.cell_;
-    const double ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
-    const int j0 = std::max(0, static_cast<int>(std::floor((ylo - eps - e.origin_.y) / e.cell_)));
-    const int j1 =
-        std::min(e.ny_ - 1, static_cast<int>(std::floor((yhi + eps - e.origin_.y) / e.cell_)));
-    for (int j = j0; j <= j1; ++j) {
-      double xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
-      if (a.y != b.y) {
-        const double y0 = std::max(ylo, e.origin_.y + j * e.cell_);
-        const double y1 = std::min(yhi, e.origin_.y + (j + 1) * e.cell_);
-        const double t0 = std::clamp((y0 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double t1 = std::clamp((y1 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
-        xlo = std::max(xlo, std::min(x0, x1));
-        xhi = std::min(xhi, std::max(x0, x1));
-      }
-      const int i0 = std::max(0, static_cast<int>(std::floor((xlo - eps - e.origin_.x) / e.cell_)));
-      const int i1 =
-          std::min(e.nx_ - 1, static_cast<int>(std::floor((xhi + eps - e.origin_.x) / e.cell_)));
-      for (int i = i0; i <= i1; ++i)
-        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(e.nx_) +
-           static_cast<std::size_t>(i));
-    }
-  };
+  // The cells an edge crosses (grid_walk.h), not its bounding box: a long diagonal edge (the
+  // side of a large chamfered or drafted part) would be listed in thousands of cells it
+  // never comes near, on every level, and every query there would test it.
+  const CellGrid grid{e.origin_, e.cell_, e.nx_, e.ny_};
+  auto cells = [&](Vec2 a, Vec2 b, auto&& fn) { for_cells_on_segment(grid, a, b, fn); };
   e.start_.assign(ncell + 1, 0);
   edges([&](Vec2 a, Vec2 b, double) { cells(a, b, [&](std::size_t c) { ++e.start_[c + 1]; }); });
   for (std::size_t c = 0; c < ncell; ++c)

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "swarf/core/ball_contact.h"
+#include "swarf/core/grid_walk.h"
 
 namespace swarf::trislice_detail {
 namespace {
@@ -121,32 +122,9 @@ MeshContacts::MeshContacts(const Mesh& mesh, double radius_mm) {
   enx_ = static_cast<int>(box.size().x / ecell_) + 1;
   eny_ = static_cast<int>(box.size().y / ecell_) + 1;
   const std::size_t necell = static_cast<std::size_t>(enx_) * static_cast<std::size_t>(eny_);
+  const CellGrid grid{eorigin_, ecell_, enx_, eny_};
   auto cells = [&](const Edge& g, auto&& fn) {
-    const double eps = 1e-9 * ecell_;
-    const Vec2 a = g.a.xy(), b = g.b.xy();
-    const int j0 = std::clamp(
-        static_cast<int>(std::floor((g.box.min.y - eps - eorigin_.y) / ecell_)), 0, eny_ - 1);
-    const int j1 = std::clamp(
-        static_cast<int>(std::floor((g.box.max.y + eps - eorigin_.y) / ecell_)), 0, eny_ - 1);
-    for (int j = j0; j <= j1; ++j) {
-      double xlo = g.box.min.x, xhi = g.box.max.x;
-      if (a.y != b.y) {
-        const double y0 = std::max(g.box.min.y, eorigin_.y + j * ecell_);
-        const double y1 = std::min(g.box.max.y, eorigin_.y + (j + 1) * ecell_);
-        const double t0 = std::clamp((y0 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double t1 = std::clamp((y1 - a.y) / (b.y - a.y), 0.0, 1.0);
-        const double x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
-        xlo = std::max(xlo, std::min(x0, x1));
-        xhi = std::min(xhi, std::max(x0, x1));
-      }
-      const int i0 =
-          std::clamp(static_cast<int>(std::floor((xlo - eps - eorigin_.x) / ecell_)), 0, enx_ - 1);
-      const int i1 =
-          std::clamp(static_cast<int>(std::floor((xhi + eps - eorigin_.x) / ecell_)), 0, enx_ - 1);
-      for (int i = i0; i <= i1; ++i)
-        fn(static_cast<std::size_t>(j) * static_cast<std::size_t>(enx_) +
-           static_cast<std::size_t>(i));
-    }
+    for_cells_on_segment(grid, g.a.xy(), g.b.xy(), fn);
   };
   estart_.assign(necell + 1, 0);
   for (const Edge& g : edges_)
