@@ -54,6 +54,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.clearance_z_mm = num(p, "clearance_z");
   ap.feed_mm_min = num(p, "feed");
   ap.plunge_feed_mm_min = num(p, "plunge_feed");
+  ap.link_feed_mm_min = num(p, "link_feed");
   ap.ramp_angle_deg = num(p, "ramp_angle");
   ap.helix_radius_mm = num(p, "helix_radius");
   ap.plunge_candidates = p.at("plunge_candidates").get<int>();
@@ -121,6 +122,9 @@ const OperationRegistrar kRegistrar(Operation{
             number_param("max_pixels", 6e7,
                          "largest simulation image, pixels (the automatic resolution is "
                          "coarsened to fit)"),
+            number_param("link_feed", 0.0,
+                         "feed of keep-tool-down links over cleared floor, mm/min (0 = 5000, "
+                         "the rapid rate of the time estimates)"),
         },
         "helix and ramp",
         {

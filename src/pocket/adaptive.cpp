@@ -49,6 +49,8 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
   if (p.floor_stock_mm < 0.0 || p.floor_stock_mm >= p.depth_mm)
     return bad("floor_stock_mm must be in [0, depth_mm)");
   if (p.wall_stock_mm < 0.0) return bad("wall_stock_mm must not be negative");
+  if (!(p.link_feed_mm_min >= 0.0))
+    return bad("link_feed_mm_min must be >= 0 (0 = the rapid rate)");
   if (!(p.feed_mm_min > 0.0 && p.plunge_feed_mm_min > 0.0 && p.rapid_mm_min > 0.0))
     return bad("feeds must be positive mm/min");
   if (!(p.ramp_angle_deg > 0.0 && p.ramp_angle_deg <= 45.0))
@@ -361,6 +363,10 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
   res.material_left_mm2 = static_cast<double>(left) * m.h * m.h;
 }
 
+double link_feed(const AdaptiveParams& p) {
+  return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
+}
+
 double path_time_s(const LinkedPath& lp, const AdaptiveParams& p) {
   double t = 0.0;
   const double lift = 2.0 * (p.clearance_z_mm - (p.top_z_mm - p.depth_mm));
@@ -454,8 +460,13 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   if (!entries) return entries.status();
   pocket::LinkCosts costs;
   costs.feed_mm_min = params.feed_mm_min;
+  costs.link_feed_mm_min = link_feed(params);
   costs.rapid_mm_min = params.rapid_mm_min;
   costs.lift_mm = params.clearance_z_mm - (params.top_z_mm - params.depth_mm);
+  // A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
+  costs.descent_mm = 1.0 + (params.stepdown_mm > 0.0 ? std::min(params.stepdown_mm, params.depth_mm)
+                                                     : params.depth_mm - params.floor_stock_mm);
+  costs.plunge_feed_mm_min = params.plunge_feed_mm_min;
   costs.smoothing_iterations = params.smoothing_iterations;
   // seed 000 4.1: several plunge points; keep the fastest path (engagement is held to the
   // same target by construction, so time decides). Each candidate is a simulation of its own
@@ -554,6 +565,13 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   for (std::size_t k = 0; k < lp.entry.size(); ++k)
     if (lp.jump[k] && lp.entry[k] >= 0 && order[static_cast<std::size_t>(lp.entry[k])].solid)
       ++res.straight_plunges;
+  // The link feed where the re-simulation finds a move removing at most graze_px a step.
+  // The chip of a cut of small radial depth ae thins as sqrt(ae / D): at the link feed, k
+  // times the cutting feed, a step removing 1 / k^2 of a target step makes the chip of a
+  // target step at the cutting feed (the default 5x: 4 %, which is cut_px, the threshold
+  // below which a step counts as a link at all).
+  const double graze_px =
+      std::min(m.cut_px, m.target_px * std::pow(params.feed_mm_min / link_feed(params), 2));
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
@@ -591,13 +609,15 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         continue;
       }
       double px = 0.0, len = 0.0;
-      bool link = true;
+      bool link = true, fast = true;
       for (std::size_t s = a; s < b; ++s) {
         px += res.steps[s].engagement_px;
         len += res.steps[s].length_mm;
         link = link && res.steps[s].engagement_px <= m.cut_px;
+        fast = fast && res.steps[s].engagement_px <= graze_px;
       }
-      Move mv = make_move(MoveKind::kFeed, end, params.feed_mm_min, !link);
+      Move mv =
+          make_move(MoveKind::kFeed, end, fast ? link_feed(params) : params.feed_mm_min, !link);
       mv.engagement_deg = static_cast<float>(angle_of(m, static_cast<int>(px), len));
       // A straight move between two points of a pass round an island's vertex cuts in by its
       // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through

@@ -109,9 +109,14 @@ struct LinkedPath {
   int boundary_groups = 0;
 };
 struct LinkCosts {
-  double feed_mm_min = 1000.0;
+  double feed_mm_min = 1000.0;       ///< cutting
+  double link_feed_mm_min = 5000.0;  ///< keep-tool-down links over cleared floor
   double rapid_mm_min = 5000.0;
-  double lift_mm = 10.0;  ///< up and down distance of one retract
+  double lift_mm = 10.0;  ///< from the floor up to the clearance plane
+  /// The last part of the way down after a retract, at the plunge feed (from 1 mm above
+  /// the previous layer's floor).
+  double descent_mm = 1.0;
+  double plunge_feed_mm_min = 300.0;
   int smoothing_iterations = 2;
 };
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,

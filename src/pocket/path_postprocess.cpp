@@ -122,6 +122,19 @@ bool straight_ok(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
   return true;
 }
 
+// Whether a straight move from a to b would touch any material (probes only; the disk at a
+// is clear, so the first contact shows in some sub-step's crescent).
+bool grazes(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
+  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
+  Vec2 prev = a;
+  for (int k = 1; k <= n; ++k) {
+    const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
+    if (stock.probe(prev, p, 0) > 0) return true;
+    prev = p;
+  }
+  return false;
+}
+
 // Appends the sub-steps of a straight move and cuts them.
 void apply_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
   const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
@@ -298,14 +311,21 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     std::vector<std::size_t> taut;
     if (!has_jump) taut = pull_taut(m, stock, raw.pts, r.first, r.last);
     double taut_len = 0.0;
+    bool touches = false;
     Vec2 q0 = a;
     for (std::size_t q : taut) {
       taut_len += distance(q0, raw.pts[q]);
+      touches = touches || grazes(m, stock, q0, raw.pts[q]);
       q0 = raw.pts[q];
     }
-    const double stay_s = taut_len / costs.feed_mm_min;
+    // Both in minutes: the way round at the link feed, or at the cutting feed where it
+    // grazes material (such a way is cutting length at a few degrees, out of the band, so it
+    // is weighed as before links went at the link feed); a retract as the output makes it
+    // (up, across and most of the way down at the rapid rate, the rest at the plunge feed).
+    const double stay_s = taut_len / (touches ? costs.feed_mm_min : costs.link_feed_mm_min);
     const double lift_s =
-        (2.0 * costs.lift_mm + distance(a, b)) / costs.rapid_mm_min + 1.0 / costs.feed_mm_min;
+        (2.0 * costs.lift_mm - costs.descent_mm + distance(a, b)) / costs.rapid_mm_min +
+        costs.descent_mm / costs.plunge_feed_mm_min;
     // Keep the tool down where that is safe (seed 000 6.5); retract only when the way
     // round is more than three times slower than lifting over.
     if (has_jump || 3.0 * lift_s < stay_s) {

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "pocket/sweep_checker.h"
 #include "swarf/pocket/adaptive.h"
+#include "swarf/toolpath/metrics.h"
 
 namespace swarf {
 namespace {
@@ -378,6 +380,57 @@ TEST(AdaptivePocket, RandomPocketWithMaterialBehindAPatchOfCentresThinnerThanAPi
   EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
   EXPECT_GE(o.result.straight_plunges, 1);
   EXPECT_LE(o.sweep.residual_mm2, 2.0);
+}
+
+// Keep-tool-down links go over cleared floor at the link feed (the rapid rate by default),
+// and they are weighed against a retract as the output makes one (the descent at the plunge
+// feed included). The independent sweep checks that what runs at the link feed cuts
+// nothing: no sample of such a move touches material that is there at that moment.
+TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
+  const Pocket p = scaled(load("l_pocket_islands.json"), 0.6);
+  Tool t;
+  t.diameter_mm = 6.0;
+  AdaptiveParams ap;
+  ap.stepover_mm = 0.6;
+  ap.depth_mm = 3.0;
+  auto fast = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(fast.ok()) << fast.status().to_string();
+  std::vector<testing::SweepSample> samples;
+  const auto s = testing::sweep_check(p.region, 3.0, fast->toolpath, fast->target_engagement_deg,
+                                      kCheckerPixel, kWallTol, &samples);
+  const auto& mv = fast->toolpath.moves;
+  double link_len = 0.0, removed = 0.0, all = 0.0;
+  std::map<std::size_t, double> per_move;
+  for (const auto& q : samples) {
+    all += q.removed_mm2;
+    const Move& m = mv[q.move];
+    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
+    link_len += q.length_mm;
+    removed += q.removed_mm2;
+    per_move[q.move] += q.removed_mm2;
+  }
+  double most = 0.0;
+  for (const auto& [k, a] : per_move)
+    most = std::max(most, a);
+  std::printf(
+      "  links at %.0f mm/min: %.0f mm in %zu moves, removing %.3f mm^2 of %.0f (at most "
+      "%.3f mm^2 in one move)\n",
+      ap.rapid_mm_min, link_len, per_move.size(), removed, all, most);
+  EXPECT_GT(link_len, 100.0);
+  // Crumbs of the checker's finer pixels at most (one corner: 0.03 mm^2): under a quarter of
+  // what one step at the target removes (stepover x step = 0.18 mm^2).
+  EXPECT_LE(removed, 5e-4 * all);
+  EXPECT_LE(most, 0.25 * ap.stepover_mm * 0.3);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  // Links at the cutting feed instead: the path may retract more, and takes longer.
+  ap.link_feed_mm_min = ap.feed_mm_min;
+  auto slow = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(slow.ok());
+  const auto tf = compute_metrics(fast->toolpath), ts = compute_metrics(slow->toolpath);
+  std::printf("  machining %.0f s (links at the cutting feed: %.0f s), lifts %zu (%zu)\n",
+              tf.machining_time_s, ts.machining_time_s, tf.lift_offs, ts.lift_offs);
+  EXPECT_LT(tf.machining_time_s, 0.95 * ts.machining_time_s);
+  EXPECT_LE(tf.lift_offs, ts.lift_offs);
 }
 
 // Pocket 317 of bench/pocket_random.sh: a ø20 between a square island and a round wall 20.2

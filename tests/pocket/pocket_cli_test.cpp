@@ -76,6 +76,27 @@ TEST(PocketCli, StraightPlungeIsCountedAndCanBeTurnedOff) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("off.nc")));
 }
 
+// --link-feed sets the F word of the links over cleared floor (5000 by default), and a
+// negative one is a bad parameter that writes nothing.
+TEST(PocketCli, LinkFeedSetsTheFeedOfTheLinks) {
+  testing::TempDir dir;
+  const std::string common = "pocket " + std::string(SWARF_TEST_DATA_DIR) +
+                             "/pocket/kirimoto_pocket.json --tool flat:10 --depth 3 ";
+  const auto def = testing::run_swarf(common + "-o " + dir.file("def.nc"));
+  ASSERT_EQ(def.status, 0) << def.out;
+  const auto slow = testing::run_swarf(common + "--link-feed 2000 -o " + dir.file("slow.nc"));
+  ASSERT_EQ(slow.status, 0) << slow.out;
+  const std::string a = testing::read_file(dir.file("def.nc"));
+  const std::string b = testing::read_file(dir.file("slow.nc"));
+  EXPECT_NE(a.find("F5000"), std::string::npos);
+  EXPECT_EQ(b.find("F5000"), std::string::npos);
+  EXPECT_NE(b.find("F2000"), std::string::npos);
+  const auto bad = testing::run_swarf(common + "--link-feed -1 -o " + dir.file("bad.nc"));
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  EXPECT_NE(bad.out.find("link_feed"), std::string::npos) << bad.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("bad.nc")));
+}
+
 TEST(PocketCli, OpenOutlineIsABadInputExitNamingTheFile) {
   testing::TempDir dir;
   dir.write("open.svg", "<svg><polyline points=\"0,0 10,0 10,10\"/></svg>");

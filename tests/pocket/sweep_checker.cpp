@@ -41,6 +41,7 @@ struct Sample {
   Vec2 dir;
   double ds;
   bool entry;
+  std::size_t move = 0;  ///< index in the toolpath's moves
 };
 
 // Points along the floor pass every `step` mm.
@@ -50,7 +51,8 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
     zmin = std::min(zmin, m.end.z);
   std::vector<Sample> out;
   Vec3 at = tp.moves.empty() ? Vec3{} : tp.moves.front().end;
-  for (const Move& m : tp.moves) {
+  for (std::size_t mi = 0; mi < tp.moves.size(); ++mi) {
+    const Move& m = tp.moves[mi];
     const Vec3 from = at;
     at = m.end;
     if (std::abs(m.end.z - zmin) > 1e-6) continue;
@@ -58,7 +60,7 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
     if (std::abs(from.z - zmin) > 1e-6) {
       // Down to the floor (a plunge, a helix's or a ramp's last piece): the disk where it
       // arrives is cut even when no floor move follows (a plunge straight back up).
-      out.push_back({m.end.xy(), {1.0, 0.0}, 0.0, true});
+      out.push_back({m.end.xy(), {1.0, 0.0}, 0.0, true, mi});
       continue;
     }
     const bool entry = m.kind != MoveKind::kFeed;
@@ -75,7 +77,7 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
         const double a = a0 + sweep * k / n;
         const Vec2 tangent = Vec2{-std::sin(a), std::cos(a)} * (m.clockwise ? -1.0 : 1.0);
         out.push_back(
-            {c + Vec2{std::cos(a), std::sin(a)} * r, tangent, std::abs(sweep) * r / n, entry});
+            {c + Vec2{std::cos(a), std::sin(a)} * r, tangent, std::abs(sweep) * r / n, entry, mi});
       }
       continue;
     }
@@ -84,7 +86,8 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
     if (len < 1e-12) continue;
     const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
     for (int k = 1; k <= n; ++k)
-      out.push_back({a + (b - a) * (static_cast<double>(k) / n), (b - a) / len, len / n, entry});
+      out.push_back(
+          {a + (b - a) * (static_cast<double>(k) / n), (b - a) / len, len / n, entry, mi});
   }
   return out;
 }
@@ -191,10 +194,11 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         if (eng >= 170.0) rep.slot_length_mm += s.ds;
       }
     }
-    if (samples_out != nullptr) samples_out->push_back({s.p, s.ds, sample_eng, d});
     if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
     last = s.p;
     const int removed = stamp(s.p, cell, 1, 2);
+    if (samples_out != nullptr)
+      samples_out->push_back({s.p, s.ds, sample_eng, d, s.move, removed * h * h});
     if (!s.entry) {
       win_len += s.ds;
       win_area += removed * h * h;

@@ -40,6 +40,8 @@ struct SweepSample {
   double length_mm = 0.0;         ///< path length this sample stands for
   double engagement_deg = 0.0;    ///< -1 for entry samples (helix, ramp)
   double wall_distance_mm = 0.0;  ///< from the tool centre to the nearest wall or island
+  std::size_t move = 0;           ///< index of its move in the toolpath
+  double removed_mm2 = 0.0;       ///< material the disk removes here
 };
 
 /// region: outer ring then islands. The floor pass is the moves at the lowest z of the

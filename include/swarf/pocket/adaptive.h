@@ -48,10 +48,15 @@ struct AdaptiveParams {
   double top_z_mm = 0.0;        ///< top of the stock
   double clearance_z_mm = 5.0;  ///< rapid plane above the stock
 
-  double feed_mm_min = 1000.0;        ///< cutting and linking feed
+  double feed_mm_min = 1000.0;        ///< cutting feed
   double plunge_feed_mm_min = 300.0;  ///< helix, ramp and plunge feed
   double rapid_mm_min = 5000.0;       ///< for time estimates (retract or stay down)
-  double ramp_angle_deg = 3.0;        ///< descent angle of helix and ramp entries
+  /// Feed of the keep-tool-down links over cleared floor (output moves that the
+  /// re-simulation finds removing nothing, or so little that the chip at this feed is no
+  /// thicker than a target step's at feed_mm_min), straight G1 moves; 0 = rapid_mm_min. A
+  /// machine whose rapids are dog-legged is safe with it: the moves are interpolated.
+  double link_feed_mm_min = 0.0;
+  double ramp_angle_deg = 3.0;  ///< descent angle of helix and ramp entries
   /// Helix radius (tool centre), mm; 0 = 0.3 x tool diameter, reduced to what fits.
   double helix_radius_mm = 0.0;
   /// Plunge points tried along the medial axis; the fastest toolpath wins.
