@@ -367,12 +367,25 @@ double link_feed(const AdaptiveParams& p) {
   return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
 }
 
+// A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
+double retract_descent_mm(const AdaptiveParams& p) {
+  return 1.0 + (p.stepdown_mm > 0.0 ? std::min(p.stepdown_mm, p.depth_mm)
+                                    : p.depth_mm - p.floor_stock_mm);
+}
+
+// The time of a linked path as the output will run it (links at the link feed, retracts
+// with their descent at the plunge feed), for choosing among plunge candidates.
 double path_time_s(const LinkedPath& lp, const AdaptiveParams& p) {
   double t = 0.0;
-  const double lift = 2.0 * (p.clearance_z_mm - (p.top_z_mm - p.depth_mm));
+  const double lift = p.clearance_z_mm - (p.top_z_mm - p.depth_mm);
+  const double descent = retract_descent_mm(p);
   for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
     const double l = distance(lp.pts[k], lp.pts[k + 1]);
-    t += lp.jump[k] ? (l + lift) / p.rapid_mm_min * 60.0 : l / p.feed_mm_min * 60.0;
+    if (lp.jump[k])
+      t += (l + 2.0 * lift - descent) / p.rapid_mm_min * 60.0 +
+           descent / p.plunge_feed_mm_min * 60.0;
+    else
+      t += l / (lp.kind[k] == StepKind::kLink ? link_feed(p) : p.feed_mm_min) * 60.0;
   }
   return t;
 }
@@ -463,9 +476,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   costs.link_feed_mm_min = link_feed(params);
   costs.rapid_mm_min = params.rapid_mm_min;
   costs.lift_mm = params.clearance_z_mm - (params.top_z_mm - params.depth_mm);
-  // A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
-  costs.descent_mm = 1.0 + (params.stepdown_mm > 0.0 ? std::min(params.stepdown_mm, params.depth_mm)
-                                                     : params.depth_mm - params.floor_stock_mm);
+  costs.descent_mm = retract_descent_mm(params);
   costs.plunge_feed_mm_min = params.plunge_feed_mm_min;
   costs.smoothing_iterations = params.smoothing_iterations;
   // seed 000 4.1: several plunge points; keep the fastest path (engagement is held to the
