@@ -72,13 +72,22 @@ struct Outcome {
   testing::SweepReport sweep;
 };
 
-Result<AdaptiveResult> generate(const Pocket& p, double tool_d, double stepover_mm) {
-  Tool t;  // a flat end mill (Tool's defaults), built here so the test needs no tool parser
-  t.diameter_mm = tool_d;
+// A flat end mill (Tool's defaults), built here so the tests need no tool parser.
+Tool flat_mill(double diameter_mm) {
+  Tool t;
+  t.diameter_mm = diameter_mm;
+  return t;
+}
+
+AdaptiveParams params_3mm_deep(double stepover_mm) {
   AdaptiveParams ap;
   ap.stepover_mm = stepover_mm;
   ap.depth_mm = 3.0;
-  return adaptive_pocket(p, t, ap);
+  return ap;
+}
+
+Result<AdaptiveResult> generate(const Pocket& p, double tool_d, double stepover_mm) {
+  return adaptive_pocket(p, flat_mill(tool_d), params_3mm_deep(stepover_mm));
 }
 
 Outcome run(const Pocket& p, double tool_d, double stepover_mm) {
@@ -388,11 +397,8 @@ TEST(AdaptivePocket, RandomPocketWithMaterialBehindAPatchOfCentresThinnerThanAPi
 // nothing: no sample of such a move touches material that is there at that moment.
 TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
   const Pocket p = scaled(load("l_pocket_islands.json"), 0.6);
-  Tool t;
-  t.diameter_mm = 6.0;
-  AdaptiveParams ap;
-  ap.stepover_mm = 0.6;
-  ap.depth_mm = 3.0;
+  const Tool t = flat_mill(6.0);
+  AdaptiveParams ap = params_3mm_deep(0.6);
   auto fast = adaptive_pocket(p, t, ap);
   ASSERT_TRUE(fast.ok()) << fast.status().to_string();
   std::vector<testing::SweepSample> samples;
