@@ -666,8 +666,7 @@ AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
     }
   }
   const double layers = std::max(1, r.layers);
-  s.time_s = 0.0;
-  s.time_s = (s.cutting_length_mm + s.air_length_mm) * layers / p.feed_mm_min * 60.0;
+  s.time_s = (s.cutting_length_mm / p.feed_mm_min + s.air_length_mm / link_feed(p)) * layers * 60.0;
   if (s.cutting_length_mm > 0) s.within_20pct /= s.cutting_length_mm;
   if (!eng.empty()) {
     double sum = 0.0;

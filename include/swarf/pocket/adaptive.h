@@ -143,7 +143,7 @@ double stepover_for_angle_mm(double engagement_deg, double tool_radius_mm);
 struct AdaptiveSummary {
   double cutting_length_mm = 0.0;
   double air_length_mm = 0.0;
-  double time_s = 0.0;
+  double time_s = 0.0;  ///< cutting steps at the feed, the others at the link feed, all layers
   double engagement_mean_deg = 0.0;
   double engagement_p5_deg = 0.0;
   double engagement_p95_deg = 0.0;
