@@ -88,23 +88,6 @@ double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b) {
   return d;
 }
 
-void keep_off_rings(const PolygonSet& region, double reach, double clearance, Vec2 a, Vec2 b,
-                    std::vector<Vec2>& via, int depth) {
-  if (depth > 16) return;
-  const double need =
-      std::min({reach, distance_to_rings(region, a), distance_to_rings(region, b)}) - 1e-7;
-  if (segment_distance_to_rings(region, a, b) >= need) return;
-  const Vec2 mid = (a + b) * 0.5;
-  const Vec2 w = nearest_on_rings(region, mid);
-  const double d = distance(mid, w);
-  if (d < 1e-9 || !point_in_region(region, mid)) return;  // not a corner: leave it
-  const Vec2 q = w + (mid - w) * ((reach + clearance) / d);
-  if (!point_in_region(region, q) || distance_to_rings(region, q) < reach) return;
-  keep_off_rings(region, reach, clearance, a, q, via, depth + 1);
-  via.push_back(q);
-  keep_off_rings(region, reach, clearance, q, b, via, depth + 1);
-}
-
 Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p) {
   double best = std::numeric_limits<double>::infinity();
   Vec2 q = p;

@@ -27,13 +27,6 @@ double point_line_distance(Vec2 p, Vec2 a, Vec2 b);
 double distance_to_rings(const PolygonSet& region, Vec2 p);
 /// Least distance from the segment a-b to any ring's edge (0 where it crosses one).
 double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b);
-/// Points to go through between a and b (in order, ends excluded) so that no straight piece
-/// comes nearer to the rings than `reach`, or than a or b already are: the middle of a piece
-/// that would is moved off the nearest ring to reach + clearance, and each half is checked
-/// again (at most 16 levels deep). A straight move round the convex corner of an island cuts
-/// in by its sagitta; this keeps a tool of radius `reach` out of the walls exactly.
-void keep_off_rings(const PolygonSet& region, double reach, double clearance, Vec2 a, Vec2 b,
-                    std::vector<Vec2>& via, int depth = 0);
 /// The nearest point to p on any ring's edges.
 Vec2 nearest_on_rings(const PolygonSet& region, Vec2 p);
 

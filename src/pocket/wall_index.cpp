@@ -25,7 +25,7 @@ double box_gap_sq(Vec2 lo, Vec2 hi, Vec2 c, Vec2 e) {
 
 }  // namespace
 
-WallIndex::WallIndex(const PolygonSet& region) : region_(region) {
+WallIndex::WallIndex(const PolygonSet& region, bool index) : region_(region) {
   Box2 box;
   for (std::uint32_t r = 0; r < region_.rings.size(); ++r) {
     const Ring& ring = region_.rings[r];
@@ -36,7 +36,7 @@ WallIndex::WallIndex(const PolygonSet& region) : region_(region) {
       box.add(ring[i]);
     }
   }
-  if (edges_.size() < kMinIndexedEdges || box.empty()) return;
+  if (!index || edges_.size() < kMinIndexedEdges || box.empty()) return;
   // About one cell per edge over the box; the edges lie on the walls, so the cells they
   // occupy hold a few each.
   const Vec2 size = box.size();
@@ -212,7 +212,6 @@ bool WallIndex::inside(Vec2 p) const {
 
 void keep_off_walls(const WallIndex& walls, double reach, double clearance, Vec2 a, Vec2 b,
                     std::vector<Vec2>& via, int depth) {
-  // keep_off_rings (geometry.cpp), step for step.
   if (depth > 16) return;
   const double need = std::min({reach, walls.distance(a), walls.distance(b)}) - 1e-7;
   if (walls.segment_distance(a, b) >= need) return;

@@ -18,7 +18,8 @@ namespace swarf::pocket {
 class WallIndex {
  public:
   WallIndex() = default;
-  explicit WallIndex(const PolygonSet& region);
+  /// `index` false: always the plain loops (what the index is checked against).
+  explicit WallIndex(const PolygonSet& region, bool index = true);
 
   const PolygonSet& region() const { return region_; }
   /// distance_to_rings(region(), p).
@@ -59,7 +60,11 @@ class WallIndex {
   std::vector<Edge> ray_edges_;  ///< (ring[i], ring[i - 1]) per edge, same index as edges_
 };
 
-/// keep_off_rings (geometry.h) on an indexed region.
+/// Points to go through between a and b (in order, ends excluded) so that no straight piece
+/// comes nearer to the walls than `reach`, or than a or b already are: the middle of a piece
+/// that would is moved off the nearest wall to reach + clearance, and each half is checked
+/// again (at most 16 levels deep). A straight move round the convex corner of an island cuts
+/// in by its sagitta; this keeps a tool of radius `reach` out of the walls exactly.
 void keep_off_walls(const WallIndex& walls, double reach, double clearance, Vec2 a, Vec2 b,
                     std::vector<Vec2>& via, int depth = 0);
 
