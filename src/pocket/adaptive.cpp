@@ -367,25 +367,32 @@ double link_feed(const AdaptiveParams& p) {
   return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
 }
 
-// A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
-double retract_descent_mm(const AdaptiveParams& p) {
-  return 1.0 + (p.stepdown_mm > 0.0 ? std::min(p.stepdown_mm, p.depth_mm)
-                                    : p.depth_mm - p.floor_stock_mm);
+// The link costs of the output (path_postprocess.cpp weighs links against retracts with
+// them, and the plunge candidates are timed with them).
+pocket::LinkCosts link_costs(const AdaptiveParams& p) {
+  pocket::LinkCosts c;
+  c.feed_mm_min = p.feed_mm_min;
+  c.link_feed_mm_min = link_feed(p);
+  c.rapid_mm_min = p.rapid_mm_min;
+  c.lift_mm = p.clearance_z_mm - (p.top_z_mm - p.depth_mm);
+  // A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
+  c.descent_mm = 1.0 + (p.stepdown_mm > 0.0 ? std::min(p.stepdown_mm, p.depth_mm)
+                                            : p.depth_mm - p.floor_stock_mm);
+  c.plunge_feed_mm_min = p.plunge_feed_mm_min;
+  c.smoothing_iterations = p.smoothing_iterations;
+  return c;
 }
 
 // The time of a linked path as the output will run it (links at the link feed, retracts
 // with their descent at the plunge feed), for choosing among plunge candidates.
-double path_time_s(const LinkedPath& lp, const AdaptiveParams& p) {
+double path_time_s(const LinkedPath& lp, const pocket::LinkCosts& c) {
   double t = 0.0;
-  const double lift = p.clearance_z_mm - (p.top_z_mm - p.depth_mm);
-  const double descent = retract_descent_mm(p);
   for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
     const double l = distance(lp.pts[k], lp.pts[k + 1]);
     if (lp.jump[k])
-      t += (l + 2.0 * lift - descent) / p.rapid_mm_min * 60.0 +
-           descent / p.plunge_feed_mm_min * 60.0;
+      t += pocket::retract_minutes(c, l) * 60.0;
     else
-      t += l / (lp.kind[k] == StepKind::kLink ? link_feed(p) : p.feed_mm_min) * 60.0;
+      t += l / (lp.kind[k] == StepKind::kLink ? c.link_feed_mm_min : c.feed_mm_min) * 60.0;
   }
   return t;
 }
@@ -471,14 +478,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // narrower than the tool.
   auto entries = pocket::find_entries(m, std::max(params.plunge_candidates, 16));
   if (!entries) return entries.status();
-  pocket::LinkCosts costs;
-  costs.feed_mm_min = params.feed_mm_min;
-  costs.link_feed_mm_min = link_feed(params);
-  costs.rapid_mm_min = params.rapid_mm_min;
-  costs.lift_mm = params.clearance_z_mm - (params.top_z_mm - params.depth_mm);
-  costs.descent_mm = retract_descent_mm(params);
-  costs.plunge_feed_mm_min = params.plunge_feed_mm_min;
-  costs.smoothing_iterations = params.smoothing_iterations;
+  const pocket::LinkCosts costs = link_costs(params);
   // seed 000 4.1: several plunge points; keep the fastest path (engagement is held to the
   // same target by construction, so time decides). Each candidate is a simulation of its own
   // on its own stock, so they run in parallel; the choice (least time, the first candidate on
@@ -508,7 +508,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     paths[k] = pocket::postprocess(m, order, raw.value(), costs);
     snap_to_wall_offset(m, paths[k]);
     reach_into_tips(m, paths[k]);
-    times[k] = path_time_s(paths[k], params);
+    times[k] = path_time_s(paths[k], costs);
   });
   std::size_t best = 0;
   for (std::size_t k = 0; k < candidates; ++k) {

@@ -119,6 +119,12 @@ struct LinkCosts {
   double plunge_feed_mm_min = 300.0;
   int smoothing_iterations = 2;
 };
+/// A retract as the output makes it, in minutes: up to the clearance plane, `across_mm` over
+/// and most of the way down at the rapid rate, the last descent_mm at the plunge feed.
+inline double retract_minutes(const LinkCosts& c, double across_mm) {
+  return (2.0 * c.lift_mm - c.descent_mm + across_mm) / c.rapid_mm_min +
+         c.descent_mm / c.plunge_feed_mm_min;
+}
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
 

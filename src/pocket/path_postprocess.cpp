@@ -104,47 +104,45 @@ Groups group_regions(const Model& m, const RawPath& raw, std::vector<Region>& re
   return g;
 }
 
-// A straight move from a to b in sub-steps: true when it never gouges and never takes more
-// than the target engagement plus its tolerance (a link may graze the material front as it
-// arrives at the next cut, but never overloads the tool). Changes nothing.
-bool straight_ok(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
-  const double len = distance(a, b);
-  const int n = std::max(1, static_cast<int>(std::ceil(len / m.step_mm)));
-  // Sub-steps see the stock as it was before the link: a link that would cut its own way
-  // is rejected anyway, so the error is on the safe side.
+// The sub-steps of a straight move from a to b (pieces of at most a path step): step(from,
+// to) for each in order until it returns false; whether none did.
+template <class Step>
+bool for_substeps(const Model& m, Vec2 a, Vec2 b, Step&& step) {
+  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
   Vec2 prev = a;
   for (int k = 1; k <= n; ++k) {
     const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
-    const int e = stock.probe(prev, p);
-    if (e < 0 || e > (m.target_px + m.tol_px) * distance(prev, p) / m.step_mm) return false;
+    if (!step(prev, p)) return false;
     prev = p;
   }
   return true;
 }
 
+// A straight move from a to b in sub-steps: true when it never gouges and never takes more
+// than the target engagement plus its tolerance (a link may graze the material front as it
+// arrives at the next cut, but never overloads the tool). Changes nothing. Sub-steps see
+// the stock as it was before the link: a link that would cut its own way is rejected
+// anyway, so the error is on the safe side.
+bool straight_ok(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
+  return for_substeps(m, a, b, [&](Vec2 from, Vec2 to) {
+    const int e = stock.probe(from, to);
+    return e >= 0 && e <= (m.target_px + m.tol_px) * distance(from, to) / m.step_mm;
+  });
+}
+
 // Whether a straight move from a to b would touch any material (probes only; the disk at a
 // is clear, so the first contact shows in some sub-step's crescent).
 bool grazes(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
-  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
-  Vec2 prev = a;
-  for (int k = 1; k <= n; ++k) {
-    const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
-    if (stock.probe(prev, p, 0) > 0) return true;
-    prev = p;
-  }
-  return false;
+  return !for_substeps(m, a, b, [&](Vec2 from, Vec2 to) { return stock.probe(from, to, 0) <= 0; });
 }
 
 // Appends the sub-steps of a straight move and cuts them.
 void apply_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
-  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / m.step_mm)));
-  Vec2 prev = a;
-  for (int k = 1; k <= n; ++k) {
-    const Vec2 p = a + (b - a) * (static_cast<double>(k) / n);
-    stock.cut(prev, p);
-    out.push_back(p);
-    prev = p;
-  }
+  for_substeps(m, a, b, [&](Vec2 from, Vec2 to) {
+    stock.cut(from, to);
+    out.push_back(to);
+    return true;
+  });
 }
 
 bool try_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
@@ -311,24 +309,27 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     std::vector<std::size_t> taut;
     if (!has_jump) taut = pull_taut(m, stock, raw.pts, r.first, r.last);
     double taut_len = 0.0;
-    bool touches = false;
     Vec2 q0 = a;
     for (std::size_t q : taut) {
       taut_len += distance(q0, raw.pts[q]);
-      touches = touches || grazes(m, stock, q0, raw.pts[q]);
       q0 = raw.pts[q];
     }
     // Both in minutes: the way round at the link feed, or at the cutting feed where it
     // grazes material (such a way is cutting length at a few degrees, out of the band, so it
-    // is weighed as before links went at the link feed); a retract as the output makes it
-    // (up, across and most of the way down at the rapid rate, the rest at the plunge feed).
-    const double stay_s = taut_len / (touches ? costs.feed_mm_min : costs.link_feed_mm_min);
-    const double lift_s =
-        (2.0 * costs.lift_mm - costs.descent_mm + distance(a, b)) / costs.rapid_mm_min +
-        costs.descent_mm / costs.plunge_feed_mm_min;
+    // is weighed as before links went at the link feed); a retract as the output makes it.
+    // Whether it grazes is probed only when that decides.
+    const double lift_s = retract_minutes(costs, distance(a, b));
+    bool retract = has_jump || 3.0 * lift_s < taut_len / costs.link_feed_mm_min;
+    if (!retract && 3.0 * lift_s < taut_len / costs.feed_mm_min) {
+      q0 = a;
+      for (std::size_t q : taut) {
+        retract = retract || grazes(m, stock, q0, raw.pts[q]);
+        q0 = raw.pts[q];
+      }
+    }
     // Keep the tool down where that is safe (seed 000 6.5); retract only when the way
     // round is more than three times slower than lifting over.
-    if (has_jump || 3.0 * lift_s < stay_s) {
+    if (retract) {
       stock.stamp(b);
       out.pts.push_back(b);
       out.kind.push_back(StepKind::kLink);
