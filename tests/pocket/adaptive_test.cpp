@@ -393,8 +393,8 @@ TEST(AdaptivePocket, RandomPocketWithMaterialBehindAPatchOfCentresThinnerThanAPi
 
 // Keep-tool-down links go over cleared floor at the link feed (the rapid rate by default),
 // and they are weighed against a retract as the output makes one (the descent at the plunge
-// feed included). The independent sweep checks that what runs at the link feed cuts
-// nothing: no sample of such a move touches material that is there at that moment.
+// feed included). The independent sweep checks that what runs at the link feed removes
+// nothing but crumbs of its own finer pixels (it may come within a hair of the material).
 TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
   const Pocket p = scaled(load("l_pocket_islands.json"), 0.6);
   const Tool t = flat_mill(6.0);
