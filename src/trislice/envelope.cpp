@@ -606,7 +606,8 @@ TriSliceTop TriSliceTop::build(const TriSliceModel& model, double bin_mm, int st
   parallel_for(3, threads, [&](std::size_t k) {
     if (k == 0) t.x_ = SliceEnvelope::build(model.family(Axis::kX), bin_mm, stride);
     if (k == 1) t.y_ = SliceEnvelope::build(model.family(Axis::kY), bin_mm, stride);
-    if (k == 2) t.z_ = LevelEnvelope::build(model.family(Axis::kZ), 1.0, stride);
+    if (k == 2)
+      t.z_ = LevelEnvelope::build(model.family(Axis::kZ), auto_level_cell_mm(t.pitch_), stride);
   });
   return t;
 }

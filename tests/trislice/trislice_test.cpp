@@ -234,20 +234,32 @@ double brute_level_height(const SliceFamily& fam, Vec2 p, double r) {
 }
 
 // The level index (cells, super-cells, highest level first) against every ring edge of every
-// xy slice: z_l + sqrt(r^2 - d^2) for the nearest point of the edge within r.
+// xy slice: z_l + sqrt(r^2 - d^2) for the nearest point of the edge within r. Both cell sizes
+// that TriSliceTop::auto_level_cell_mm picks give the same answer, to the bit, with and
+// without the hint.
 TEST(ConvolutionalOffset, LevelEnvelopePruningEqualsBruteForce) {
   auto model = build_trislice_families(make_filleted_torus_part(), 0.25, {false, false, true});
   ASSERT_TRUE(model.ok());
   const SliceFamily& fam = model->family(Axis::kZ);
-  const LevelEnvelope env = LevelEnvelope::build(fam);
+  const LevelEnvelope env = LevelEnvelope::build(fam, 1.0);
+  const LevelEnvelope wide = LevelEnvelope::build(fam, 2.0);
   const double r = 4.0;
   std::size_t n = 0;
-  for (double y = -43.0; y <= 43.0; y += 4.3)
+  for (double y = -43.0; y <= 43.0; y += 4.3) {
+    std::uint32_t hint = SliceEnvelope::kNoHint, wide_hint = SliceEnvelope::kNoHint;
     for (double x = -43.0; x <= 43.0; x += 0.53) {
       const double brute = brute_level_height(fam, {x, y}, r);
-      EXPECT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
+      const double narrow = env.centre_height({x, y}, r, -1e9);
+      EXPECT_NEAR(narrow, brute, 1e-9) << x << " " << y;
+      EXPECT_EQ(wide.centre_height({x, y}, r, -1e9), narrow) << x << " " << y;
+      // A query seeded from the previous winner, as the scan lines ask.
+      const double seeded = std::max(-1e9, env.hint_height({x, y}, r, hint));
+      EXPECT_EQ(env.centre_height({x, y}, r, seeded, &hint), narrow) << x << " " << y;
+      const double wide_seeded = std::max(-1e9, wide.hint_height({x, y}, r, wide_hint));
+      EXPECT_EQ(wide.centre_height({x, y}, r, wide_seeded, &wide_hint), narrow) << x << " " << y;
       ++n;
     }
+  }
   EXPECT_GT(n, 3000u);
 }
 
@@ -287,7 +299,8 @@ TEST(ConvolutionalOffset, LevelEnvelopeOnDraftedAndVerticalWallsEqualsBruteForce
   auto model = build_trislice_families(drafted_and_vertical_walls(), 0.1, {false, false, true});
   ASSERT_TRUE(model.ok());
   const SliceFamily& fam = model->family(Axis::kZ);
-  const LevelEnvelope env = LevelEnvelope::build(fam);
+  const LevelEnvelope env = LevelEnvelope::build(fam, 1.0);
+  const LevelEnvelope wide = LevelEnvelope::build(fam, 2.0);
   std::size_t ring_edges = 0;
   for (const PolygonSet& set : fam.slices)
     for (const Ring& ring : set.rings)
@@ -300,6 +313,7 @@ TEST(ConvolutionalOffset, LevelEnvelopeOnDraftedAndVerticalWallsEqualsBruteForce
     for (double x = -55.0; x <= 57.0; x += 0.47) {
       const double brute = brute_level_height(fam, {x, y}, r);
       ASSERT_NEAR(env.centre_height({x, y}, r, -1e9), brute, 1e-9) << x << " " << y;
+      ASSERT_EQ(wide.centre_height({x, y}, r, -1e9), env.centre_height({x, y}, r, -1e9));
       if (brute > 0.0) ++n;
     }
   EXPECT_GT(n, 1500u);

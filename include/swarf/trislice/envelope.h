@@ -131,6 +131,11 @@ class TriSliceTop {
   /// The fastest bin width measured on the Table 2 part with a ø8 ball: 1 mm for pitches of
   /// 0.05 mm and coarser, 0.5 mm finer (bench/RESULTS-trislice.md, third round).
   static double auto_bin_mm(double pitch_mm) { return pitch_mm >= 0.05 - 1e-9 ? 1.0 : 0.5; }
+  /// Cell size of the level index, likewise: 2 mm at pitches of 0.05 mm and coarser, 1 mm
+  /// finer. A cell holds about cell x (ring length per mm^2) x (levels) edges: with few levels
+  /// the cells a query walks cost more than their edges, with many the other way round
+  /// (bench/RESULTS-trislice.md, session 14). The answers do not depend on it.
+  static double auto_level_cell_mm(double pitch_mm) { return pitch_mm >= 0.05 - 1e-9 ? 2.0 : 1.0; }
   /// Ball-centre height over p for a ball of radius r_mm, -infinity when nothing is below.
   /// `primary` is asked first (its slices run along the scan line: Eq. (1) exactly there).
   double centre_height(Vec2 p, double r_mm, Axis primary = Axis::kY,
