@@ -226,15 +226,20 @@ void cross_check_lines(std::vector<std::vector<Vec3>>& lines, const std::vector<
     Vec3 p;
     bool refined;  // passed on to the neighbours
   };
-  std::vector<std::vector<Pt>> cur(n);
+  // The lines as lattice points; passing[i]: line i has points to pass on this round. Each
+  // round reads `cur` and writes `add` (line i only its own), then a second pass merges:
+  // identical for any thread count. Only lines beside one that passes points on are visited.
+  std::vector<std::vector<Pt>> cur(n), add(n);
+  std::vector<char> passing(n, 0);
   parallel_for(n, ctx.threads, [&](std::size_t i) {
     const std::vector<Vec3>& line = lines[i];
     std::vector<Pt>& out = cur[i];
     out.reserve(line.size());
+    std::size_t k = 0;  // the coordinates rise along the line and are copies of `along`
     for (const Vec3& q : line) {
       const double u = along_x ? q.x : q.y;
-      const auto k =
-          static_cast<std::size_t>(std::lower_bound(along.begin(), along.end(), u) - along.begin());
+      while (k < along.size() && along[k] < u)
+        ++k;
       out.push_back({k, q, false});
     }
     // First pass: refined where the spacing fell below the quarter stride.
@@ -243,14 +248,14 @@ void cross_check_lines(std::vector<std::vector<Vec3>>& lines, const std::vector<
       const bool prev = j > 0 && out[j].k - out[j - 1].k < quarter;
       const bool next = j + 1 < out.size() && out[j + 1].k - out[j].k < quarter;
       out[j].refined = prev || next;
+      passing[i] = passing[i] || out[j].refined;
     }
   });
-  std::vector<std::vector<Pt>> next(n);
-  std::vector<char> changed(n, 0);
   for (std::size_t round = 0; round < n + 1; ++round) {
     parallel_for(n, ctx.threads, [&](std::size_t i) {
-      changed[i] = 0;
+      add[i].clear();
       if (ctx.cancelled()) return;
+      if (!((i > 0 && passing[i - 1]) || (i + 1 < n && passing[i + 1]))) return;
       const std::vector<Pt>& own = cur[i];
       // Candidates: refined lattice indices of the neighbours that this line lacks, with the
       // neighbours' (highest) CL there.
@@ -266,7 +271,7 @@ void cross_check_lines(std::vector<std::vector<Vec3>>& lines, const std::vector<
       cand.erase(std::unique(cand.begin(), cand.end(),
                              [](const auto& x, const auto& y) { return x.first == y.first; }),
                  cand.end());
-      std::vector<Pt> add;
+      std::vector<Pt>& added = add[i];
       ScanHint hint;
       std::size_t j = 0;  // own[j - 1].k < c < own[j].k
       for (std::size_t c = 0; c < cand.size();) {
@@ -299,37 +304,37 @@ void cross_check_lines(std::vector<std::vector<Vec3>>& lines, const std::vector<
           std::size_t g = 0;
           for (std::size_t m = a.k + 1; m < b.k; ++m) {
             if (g < got.size() && got[g].k == m) {
-              add.push_back({m, got[g++].p, true});
+              added.push_back({m, got[g++].p, true});
               continue;
             }
             const auto s = eval_at(i, m, hint);
             hint = s.hint;
-            add.push_back({m, s.p, true});
+            added.push_back({m, s.p, true});
           }
         } else {
-          add.insert(add.end(), got.begin(), got.end());
+          added.insert(added.end(), got.begin(), got.end());
         }
       }
-      if (add.empty()) {
-        next[i] = own;
-        for (Pt& q : next[i])
-          q.refined = false;  // passed on already
-        return;
-      }
-      changed[i] = 1;
-      std::vector<Pt> merged;
-      merged.reserve(own.size() + add.size());
-      std::merge(own.begin(), own.end(), add.begin(), add.end(), std::back_inserter(merged),
-                 [](const Pt& x, const Pt& y) { return x.k < y.k; });
-      for (Pt& q : merged)
-        if (std::binary_search(own.begin(), own.end(), q,
-                               [](const Pt& x, const Pt& y) { return x.k < y.k; }))
-          q.refined = false;
-      next[i] = std::move(merged);
     });
-    std::swap(cur, next);
-    if (ctx.cancelled() || std::none_of(changed.begin(), changed.end(), [](char c) { return c; }))
-      break;
+    if (ctx.cancelled()) break;
+    // The points passed on this round have been read: the new points join their lines, and
+    // only the new points of refined stretches are passed on next round.
+    parallel_for(n, ctx.threads, [&](std::size_t i) {
+      std::vector<Pt>& own = cur[i];
+      if (passing[i])
+        for (Pt& q : own)
+          q.refined = false;
+      passing[i] = 0;
+      if (add[i].empty()) return;
+      std::vector<Pt> merged;
+      merged.reserve(own.size() + add[i].size());
+      std::merge(own.begin(), own.end(), add[i].begin(), add[i].end(), std::back_inserter(merged),
+                 [](const Pt& x, const Pt& y) { return x.k < y.k; });
+      own = std::move(merged);
+      for (const Pt& q : add[i])
+        passing[i] = passing[i] || q.refined;
+    });
+    if (std::none_of(passing.begin(), passing.end(), [](char c) { return c; })) break;
   }
   parallel_for(n, ctx.threads, [&](std::size_t i) {
     lines[i].clear();
