@@ -259,18 +259,34 @@ void cross_check_lines(std::vector<std::vector<Vec3>>& lines, const std::vector<
       const std::vector<Pt>& own = cur[i];
       // Candidates: refined lattice indices of the neighbours that this line lacks, with the
       // neighbours' (highest) CL there.
+      // Each neighbour's points rise in k: the two lists are merged, not sorted.
       std::vector<std::pair<std::size_t, double>> cand;
-      for (std::size_t nb : {i - 1, i + 1}) {
-        if (nb >= n) continue;  // i - 1 wraps for i = 0
-        for (const Pt& q : cur[nb])
-          if (q.refined) cand.emplace_back(q.k, q.p.z);
+      {
+        static const std::vector<Pt> kNone;
+        const std::vector<Pt>& lo = i > 0 ? cur[i - 1] : kNone;
+        const std::vector<Pt>& hi = i + 1 < n ? cur[i + 1] : kNone;
+        std::size_t u = 0, v = 0;
+        auto next_refined = [](const std::vector<Pt>& l, std::size_t& at) {
+          while (at < l.size() && !l[at].refined)
+            ++at;
+          return at < l.size();
+        };
+        for (;;) {
+          const bool has_lo = next_refined(lo, u), has_hi = next_refined(hi, v);
+          if (!has_lo && !has_hi) break;
+          if (has_lo && has_hi && lo[u].k == hi[v].k) {
+            cand.emplace_back(lo[u].k, std::max(lo[u].p.z, hi[v].p.z));
+            ++u;
+            ++v;
+          } else if (has_lo && (!has_hi || lo[u].k < hi[v].k)) {
+            cand.emplace_back(lo[u].k, lo[u].p.z);
+            ++u;
+          } else {
+            cand.emplace_back(hi[v].k, hi[v].p.z);
+            ++v;
+          }
+        }
       }
-      std::sort(cand.begin(), cand.end(), [](const auto& x, const auto& y) {
-        return x.first != y.first ? x.first < y.first : x.second > y.second;
-      });
-      cand.erase(std::unique(cand.begin(), cand.end(),
-                             [](const auto& x, const auto& y) { return x.first == y.first; }),
-                 cand.end());
       std::vector<Pt>& added = add[i];
       ScanHint hint;
       std::size_t j = 0;  // own[j - 1].k < c < own[j].k
