@@ -350,14 +350,10 @@ namespace {
 // of those pixels.
 void aim_at_material(const Model& m, const PixelStock& stock, Entry& e) {
   const Vec2 q = m.grid.to_px(e.centre);
-  const double rp = m.radius_mm / m.h;
   Vec2 sum{0.0, 0.0};
-  for (int j = std::max(0, static_cast<int>(q.y - rp));
-       j <= std::min(m.grid.height - 1, static_cast<int>(q.y + rp) + 1); ++j)
-    for (int i = std::max(0, static_cast<int>(q.x - rp));
-         i <= std::min(m.grid.width - 1, static_cast<int>(q.x + rp) + 1); ++i)
-      if (stock.material().get(i, j) && norm_sq(Vec2{i - q.x, j - q.y}) <= rp * rp)
-        sum = sum + normalized(Vec2{i - q.x, j - q.y + 1e-12});
+  for_disk(m.grid, e.centre, m.radius_mm, [&](int i, int j) {
+    if (stock.material().get(i, j)) sum = sum + normalized(Vec2{i - q.x, j - q.y + 1e-12});
+  });
   e.start_angle_rad = std::atan2(sum.y, sum.x);
 }
 
