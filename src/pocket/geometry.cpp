@@ -44,6 +44,23 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return distance(p, nearest_on_segment(p, a, b));
 }
 
+double box_gap_sq(Vec2 lo, Vec2 hi, Vec2 c, Vec2 e) {
+  const double gx = std::max({std::min(c.x, e.x) - hi.x, 0.0, lo.x - std::max(c.x, e.x)});
+  const double gy = std::max({std::min(c.y, e.y) - hi.y, 0.0, lo.y - std::max(c.y, e.y)});
+  return gx * gx + gy * gy;
+}
+
+double segment_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 e) {
+  // Proper or touching crossing: distance 0.
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
+  const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
+  if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+      ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0))
+    return 0.0;
+  return std::min({point_segment_distance(a, c, e), point_segment_distance(b, c, e),
+                   point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+}
+
 double point_line_distance(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
   const double len = norm(d);
@@ -58,9 +75,7 @@ double distance_to_rings(const PolygonSet& region, Vec2 p) {
   for (const Ring& r : region.rings)
     for (std::size_t i = 0, n = r.size(); i < n; ++i) {
       const Vec2 a = r[i], b = r[(i + 1) % n];
-      const double gx = std::max({std::min(a.x, b.x) - p.x, 0.0, p.x - std::max(a.x, b.x)});
-      const double gy = std::max({std::min(a.y, b.y) - p.y, 0.0, p.y - std::max(a.y, b.y)});
-      if (gx * gx + gy * gy >= d2) continue;
+      if (box_gap_sq(p, p, a, b) >= d2) continue;
       d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, a, b)));
     }
   return std::sqrt(d2);
@@ -73,17 +88,9 @@ double segment_distance_to_rings(const PolygonSet& region, Vec2 a, Vec2 b) {
     for (std::size_t i = 0, n = r.size(); i < n; ++i) {
       const Vec2 c = r[i], e = r[(i + 1) % n];
       // Boxes further apart than the best so far cannot do better.
-      const double gx = std::max({std::min(c.x, e.x) - hi.x, 0.0, lo.x - std::max(c.x, e.x)});
-      const double gy = std::max({std::min(c.y, e.y) - hi.y, 0.0, lo.y - std::max(c.y, e.y)});
-      if (gx * gx + gy * gy >= d * d) continue;
-      // Proper or touching crossing: distance 0.
-      const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
-      const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
-      if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
-          ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0))
-        return 0.0;
-      d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
-                    point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+      if (box_gap_sq(lo, hi, c, e) >= d * d) continue;
+      d = std::min(d, segment_segment_distance(a, b, c, e));
+      if (d == 0.0) return 0.0;
     }
   return d;
 }

@@ -20,6 +20,11 @@ bool point_in_region(const PolygonSet& region, Vec2 p);
 /// The point of segment ab nearest to p (a for a zero-length segment).
 Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b);
 double point_segment_distance(Vec2 p, Vec2 a, Vec2 b);
+/// Squared gap between the box [lo, hi] and the box of segment c-e (0 where they overlap):
+/// no point of the segment lies nearer. The edge loops skip edges with it.
+double box_gap_sq(Vec2 lo, Vec2 hi, Vec2 c, Vec2 e);
+/// Least distance between segments a-b and c-e, 0 where they cross or touch.
+double segment_segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 e);
 /// Distance from p to the line through a and b (to a when they coincide): the flatness
 /// measure of curve flattening (chord error).
 double point_line_distance(Vec2 p, Vec2 a, Vec2 b);

@@ -16,13 +16,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kMinIndexedEdges = 64;
 constexpr int kMaxCellsPerSide = 1024;
 
-// Squared gap between the boxes of segments (a, b) and (c, e); 0 when they overlap.
-double box_gap_sq(Vec2 lo, Vec2 hi, Vec2 c, Vec2 e) {
-  const double gx = std::max({std::min(c.x, e.x) - hi.x, 0.0, lo.x - std::max(c.x, e.x)});
-  const double gy = std::max({std::min(c.y, e.y) - hi.y, 0.0, lo.y - std::max(c.y, e.y)});
-  return gx * gx + gy * gy;
-}
-
 }  // namespace
 
 WallIndex::WallIndex(const PolygonSet& region, bool index) : region_(region) {
@@ -159,26 +152,15 @@ double WallIndex::segment_distance(Vec2 a, Vec2 b) const {
   if (!indexed()) return segment_distance_to_rings(region_, a, b);
   const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
   double d = kInf;
-  bool touch = false;
   grow(
       lo, hi,
       [&](std::uint32_t k) {
-        if (touch) return;
         const Vec2 c = edges_[k].a, e = edges_[k].b;
-        if (box_gap_sq(lo, hi, c, e) >= d * d) return;
-        // Proper or touching crossing: distance 0 (as segment_distance_to_rings).
-        const double d1 = cross(b - a, c - a), d2 = cross(b - a, e - a);
-        const double d3 = cross(e - c, a - c), d4 = cross(e - c, b - c);
-        if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
-            ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0)) && (d1 != 0 || d2 != 0)) {
-          touch = true;
-          return;
-        }
-        d = std::min({d, point_segment_distance(a, c, e), point_segment_distance(b, c, e),
-                      point_segment_distance(c, a, b), point_segment_distance(e, a, b)});
+        if (box_gap_sq(lo, hi, c, e) >= d * d) return;  // also once d is 0
+        d = std::min(d, segment_segment_distance(a, b, c, e));
       },
-      [&](double r) { return touch || d <= r; });
-  return touch ? 0.0 : d;
+      [&](double r) { return d <= r; });
+  return d;
 }
 
 bool WallIndex::inside(Vec2 p) const {
