@@ -14,10 +14,6 @@
 
 namespace swarf::pocket {
 
-/// How far the output keeps the tool's edge off the walls (beyond the wall stock): passes
-/// snapped to a wall, moves round an island's corner, straight plunges.
-constexpr double kWallClearanceMm = 0.002;
-
 /// Everything derived from pocket, tool and parameters before the first move.
 struct Model {
   double radius_mm = 0.0;    ///< tool radius

@@ -91,7 +91,7 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
           for (std::size_t k = 0; k < l.pts.size(); ++k) {
             kept.push_back(l.pts[k]);
             via.clear();
-            pocket::keep_off_walls(walls, r + p.wall_stock_mm, 0.002, l.pts[k],
+            pocket::keep_off_walls(walls, r + p.wall_stock_mm, pocket::kWallClearanceMm, l.pts[k],
                                    l.pts[(k + 1) % l.pts.size()], via);
             kept.insert(kept.end(), via.begin(), via.end());
           }

@@ -15,6 +15,11 @@
 
 namespace swarf::pocket {
 
+/// How far the pocket toolpaths keep the tool's edge off the walls (beyond the wall stock):
+/// passes snapped to a wall, moves round an island's corner, straight plunges, and the
+/// contour-parallel rings round corners.
+constexpr double kWallClearanceMm = 0.002;
+
 class WallIndex {
  public:
   WallIndex() = default;
