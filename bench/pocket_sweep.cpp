@@ -1,5 +1,6 @@
 // Judges any pocket G-code with the independent sweep of tests/pocket/sweep_checker.cpp:
-//   swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG PROGRAM.nc [SAMPLES.csv]
+//   swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG PROGRAM.nc [SAMPLES.csv
+//                      [RESIDUAL.csv]]
 // Prints one line of figures (gouge, residual, cutting length, engagement within +-20 % of
 // the target by contact arc and by removal, largest engagement, full-slot length). Used by
 // bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
@@ -14,10 +15,10 @@
 
 int main(int argc, char** argv) {
   using namespace swarf;
-  if (argc != 5 && argc != 6) {
+  if (argc < 5 || argc > 7) {
     std::fprintf(stderr,
                  "usage: swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_DEG PROGRAM.nc "
-                 "[SAMPLES.csv]\n");
+                 "[SAMPLES.csv [RESIDUAL.csv]]\n");
     return 2;
   }
   auto pocket = read_pocket(argv[1]);
@@ -32,9 +33,10 @@ int main(int argc, char** argv) {
   }
   const double d = std::atof(argv[2]), target = std::atof(argv[3]);
   std::vector<testing::SweepSample> samples;
-  const auto s =
-      testing::sweep_check(pocket->region, 0.5 * d, *program, target, 0.05, 0.2, &samples);
-  if (argc == 6) {
+  std::vector<Vec2> residual;
+  const auto s = testing::sweep_check(pocket->region, 0.5 * d, *program, target, 0.05, 0.2,
+                                      &samples, 0.5, &residual);
+  if (argc >= 6) {
     // x, y, path length, arc engagement (deg, -1 in the entry), distance to the walls.
     std::FILE* f = std::fopen(argv[5], "w");
     if (f == nullptr) {
@@ -47,13 +49,24 @@ int main(int argc, char** argv) {
                    q.engagement_deg, q.wall_distance_mm);
     std::fclose(f);
   }
+  if (argc == 7) {
+    // x, y of each residual pixel's centre (material the tool reaches and the program left).
+    std::FILE* f = std::fopen(argv[6], "w");
+    if (f == nullptr) {
+      std::fprintf(stderr, "%s: cannot write\n", argv[6]);
+      return 2;
+    }
+    std::fprintf(f, "x,y\n");
+    for (const Vec2& q : residual)
+      std::fprintf(f, "%.3f,%.3f\n", q.x, q.y);
+    std::fclose(f);
+  }
   const ToolpathMetrics m = compute_metrics(*program);
   std::printf(
       "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
       "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
       100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
-      s.slot_length_mm, m.machining_time_s,
-      static_cast<int>(m.lift_offs));
+      s.slot_length_mm, m.machining_time_s, static_cast<int>(m.lift_offs));
   return 0;
 }

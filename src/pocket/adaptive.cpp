@@ -229,32 +229,15 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
     }
   if (tips.empty() || lp.pts.size() < 2) return;
   const double near = std::max(kTipReachPx * m.h, 0.5 * m.radius_mm);
-  // Per path point, the tips it visits (in the order found), each as the points of the way
-  // there (the tip last).
-  std::vector<std::vector<std::vector<Vec2>>> visits(lp.pts.size());
-  bool any = false;
-  for (Vec2 t : tips) {
-    double best = 1e300, reached = 1e300;
-    std::size_t at = 0;
-    for (std::size_t k = 0; k < lp.pts.size(); ++k) {
-      const double d = distance(lp.pts[k], t);
-      if (d < best) {
-        best = d;
-        at = k;
-      }
-      if (k + 1 < lp.pts.size() && !lp.jump[k])
-        reached = std::min(reached, pocket::point_segment_distance(t, lp.pts[k], lp.pts[k + 1]));
-    }
-    if (reached < 0.05 * m.h || best > near) continue;
-    if (m.walls.distance(t) < reach - 1e-9 || !m.walls.inside(t)) continue;
-    const Vec2 from = lp.pts[at];
-    auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-7; };
-    // The straight way, else one through 1, 3, 7 or 15 points spread along it and pushed
-    // out of the walls. The straight way grazes the wall it runs along where the chord
-    // between two points on the offset of a convex corner dips inside it (0.3 um on an L
-    // with a rectangular island, and the wedge kept 1.6 mm^2); in a wedge between a wall and
-    // an island's corner the way bends round the corner's arc, and one midpoint was not
-    // enough (random pocket seed 132: 0.9 mm short of the tip, 11.5 mm^2 left by the sweep).
+  auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-7; };
+  // The straight way from `from` to the tip t, else one through 1, 3, 7 or 15 points spread
+  // along it and pushed out of the walls; empty when none keeps clear. The straight way
+  // grazes the wall it runs along where the chord between two points on the offset of a
+  // convex corner dips inside it (0.3 um on an L with a rectangular island, and the wedge
+  // kept 1.6 mm^2); in a wedge between a wall and an island's corner the way bends round
+  // the corner's arc, and one midpoint was not enough (random pocket seed 132: 0.9 mm short
+  // of the tip, 11.5 mm^2 left by the sweep).
+  auto way_to = [&](Vec2 from, Vec2 t) {
     std::vector<Vec2> way;
     for (int pieces = 1; pieces <= 16 && way.empty(); pieces *= 2) {
       Vec2 prev = from;
@@ -268,9 +251,69 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
       }
       if (!ok) way.clear();
     }
+    return way;
+  };
+  // Per path point, the tips it visits (in the order found), each as the points of the way
+  // there (the tip last). A tip nearer a tip already visited than to the path is reached
+  // from that tip, the way extended (session 15: random pocket seed 504, ø20, where an
+  // island's offset cuts the offset corner of the outer wall, the region of centres ends
+  // in two tips 0.7 mm apart; the path came 4.5 mm from one and 5.08 from the other, just
+  // beyond the reach, and the sweep found a crescent of 11 mm^2 left beside the island).
+  std::vector<std::vector<std::vector<Vec2>>> visits(lp.pts.size());
+  struct Visited {
+    std::size_t at, index;  // visits[at][index]
+  };
+  std::vector<Visited> visited;
+  std::vector<bool> pending(tips.size(), false);
+  bool any = false;
+  for (std::size_t ti = 0; ti < tips.size(); ++ti) {
+    const Vec2 t = tips[ti];
+    double best = 1e300, reached = 1e300;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < lp.pts.size(); ++k) {
+      const double d = distance(lp.pts[k], t);
+      if (d < best) {
+        best = d;
+        at = k;
+      }
+      if (k + 1 < lp.pts.size() && !lp.jump[k])
+        reached = std::min(reached, pocket::point_segment_distance(t, lp.pts[k], lp.pts[k + 1]));
+    }
+    if (reached < 0.05 * m.h) continue;
+    if (m.walls.distance(t) < reach - 1e-9 || !m.walls.inside(t)) continue;
+    if (best > near) {
+      pending[ti] = true;
+      continue;
+    }
+    std::vector<Vec2> way = way_to(lp.pts[at], t);
     if (way.empty()) continue;
-    visits[at].push_back(way);
+    visits[at].push_back(std::move(way));
+    visited.push_back({at, visits[at].size() - 1});
     any = true;
+  }
+  // The tips beyond the path's reach, from the nearest tip visited, while any is taken.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t ti = 0; ti < tips.size(); ++ti) {
+      if (!pending[ti]) continue;
+      const Vec2 t = tips[ti];
+      double best = near;
+      const Visited* from = nullptr;
+      for (const Visited& v : visited) {
+        const double d = distance(visits[v.at][v.index].back(), t);
+        if (d < best) {
+          best = d;
+          from = &v;
+        }
+      }
+      if (from == nullptr) continue;
+      std::vector<Vec2>& way = visits[from->at][from->index];
+      const std::vector<Vec2> more = way_to(way.back(), t);
+      if (more.empty()) continue;
+      way.insert(way.end(), more.begin(), more.end());
+      pending[ti] = false;
+      grew = true;
+    }
   }
   if (!any) return;
   LinkedPath out = lp;

@@ -303,6 +303,18 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInAWedgeRoundAnIslandCorner) {
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
+// Pocket 504 of bench/pocket_random.sh (ø20 at 30 %): below a square island the region of
+// tool centres ends in two tips 0.7 mm apart (the island's offset cuts the offset corner of
+// the outer wall). The path came 4.5 mm from one and 5.08 mm from the other, beyond the
+// tip visits' reach of 5 mm, and the sweep found a crescent of 11 mm^2 beside the island;
+// the farther tip is now visited from the nearer one.
+TEST(AdaptivePocket, RandomPocketWhoseCentresEndInTwoTipsSideBySide) {
+  const Pocket p = load("random_seed504.json");
+  const Outcome o = run(p, 20.0, 6.0);
+  expect_correct(p, o, -1.0);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm

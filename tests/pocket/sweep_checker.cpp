@@ -96,7 +96,7 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
 
 SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path, double target_deg,
                         double h, double tol, std::vector<SweepSample>* samples_out,
-                        double removal_window_mm) {
+                        double removal_window_mm, std::vector<Vec2>* residual_out) {
   SweepReport rep;
   Box2 box;
   for (const Ring& r : region.rings)
@@ -234,6 +234,8 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
       rep.unreachable_mm2 += h * h;
     } else if (cell[k] == 1 && wall_d[k] > tol) {
       rep.residual_mm2 += h * h;
+      if (residual_out != nullptr)
+        residual_out->push_back(centre(static_cast<int>(k % w), static_cast<int>(k / w)));
     }
   }
   return rep;

@@ -47,10 +47,10 @@ struct SweepSample {
 /// region: outer ring then islands. The floor pass is the moves at the lowest z of the
 /// program; helix, ramp and plunge moves and the arcs at the bottom of a helix are the
 /// entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a wall is
-/// not counted as residual.
+/// not counted as residual. residual_out: the centres of the residual's pixels (diagnosis).
 SweepReport sweep_check(const PolygonSet& region, double tool_radius_mm, const Toolpath& path,
                         double target_engagement_deg, double pixel_mm, double residual_tol_mm,
-                        std::vector<SweepSample>* samples = nullptr,
-                        double removal_window_mm = 0.5);
+                        std::vector<SweepSample>* samples = nullptr, double removal_window_mm = 0.5,
+                        std::vector<Vec2>* residual_out = nullptr);
 
 }  // namespace swarf::testing
