@@ -283,6 +283,21 @@ bool entry_at(const Model& m, int idx, Entry& e) {
       bb = c + d * t1;
     }
   }
+  // The pixel clearance can read up to about half a pixel long beside a curved wall (the
+  // nearest forbidden pixel centre lies off the nearest wall point), so the ramp is held to
+  // the exact walls, as every other move of the output: its ends come in a pixel at a time
+  // until the whole line keeps the tool radius, wall stock and kWallClearanceMm off them
+  // (session 15: random pocket seed 528, ø3, a new entry's ramp ended 4 um into a round
+  // island by the sweep).
+  const double need = r + m.wall_stock_mm + kWallClearanceMm;
+  while (best_len >= min_helix && m.walls.segment_distance(ba, bb) < need) {
+    const Vec2 d = (bb - ba) * (m.h / best_len);
+    if (m.walls.distance(ba) < m.walls.distance(bb))
+      ba = ba + d;
+    else
+      bb = bb - d;
+    best_len = distance(ba, bb);
+  }
   if (best_len < min_helix) return false;
   e.ramp_a = ba;
   e.ramp_b = bb;

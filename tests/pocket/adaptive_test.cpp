@@ -315,6 +315,16 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInTwoTipsSideBySide) {
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
+// Pocket 528 of bench/pocket_random.sh (ø3 at 8 %): a new entry's ramp beside a round
+// island ended 4 um into it by the sweep's exact distances (the ramp's ends came from the
+// pixel clearance, which can read half a pixel long beside a curved wall); ramps are held
+// to the exact walls now, as every other move.
+TEST(AdaptivePocket, RandomPocketWhoseRampRunsBesideARoundIsland) {
+  const Pocket p = load("random_seed528.json");
+  const Outcome o = run(p, 3.0, 0.24);
+  expect_correct(p, o, -1.0);
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
