@@ -482,6 +482,18 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
         c = chooser.get(0);
         kind = StepKind::kLink;
         if (c.eng < 0) break;
+        // No wall within reach, but every move within theta_max cuts nothing or more than
+        // twice the target: the tool faces a front of uncut material all round, as where
+        // it comes out of a neck about as wide as itself into uncut space (random pocket
+        // seed 541, ø12 through a neck with 0.28 mm of room: the straight move ploughed on
+        // at 145-177 degrees for 2.3 mm). Nibble as along the boundary above.
+        if (near && c.eng > m.target_px + m.tol_px) {
+          const Candidate l = chooser.least_cutting_move();
+          if (l.valid && l.eng < 0.9 * stock.probe_disk(c.p)) {
+            c = l;
+            kind = StepKind::kCut;
+          }
+        }
       }
       // Our addition: no full slot outside an entry. A move whose contact arc reaches
       // kSlotDeg is not taken: it goes into the tip of a wedge narrower than the tool

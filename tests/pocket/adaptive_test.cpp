@@ -325,6 +325,17 @@ TEST(AdaptivePocket, RandomPocketWhoseRampRunsBesideARoundIsland) {
   expect_correct(p, o, -1.0);
 }
 
+// Pocket 541 of bench/pocket_random.sh (ø12 at 5 %): the tool comes through a neck 0.28 mm
+// wider than itself into uncut material, with no wall within reach and every move within
+// theta_max cutting more than twice the target. The chooser's straight move for open space
+// ploughed on at 145-177 degrees (2.3 mm of full slot by the bench sweep); it nibbles now.
+TEST(AdaptivePocket, RandomPocketWhereTheToolLeavesANeckIntoUncutMaterial) {
+  const Pocket p = load("random_seed541.json");
+  const Outcome o = run(p, 12.0, 0.6);
+  expect_correct(p, o, -1.0);
+  EXPECT_LE(o.sweep.slot_length_mm, 0.5);  // the neck itself: every move there is a slot
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
