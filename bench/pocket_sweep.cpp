@@ -36,13 +36,15 @@ int main(int argc, char** argv) {
   std::vector<Vec2> residual;
   const auto s = testing::sweep_check(pocket->region, 0.5 * d, *program, target, 0.05, 0.2,
                                       &samples, 0.5, &residual);
+  auto open_csv = [](const char* path) {
+    std::FILE* f = std::fopen(path, "w");
+    if (f == nullptr) std::fprintf(stderr, "%s: cannot write\n", path);
+    return f;
+  };
   if (argc >= 6) {
     // x, y, path length, arc engagement (deg, -1 in the entry), distance to the walls.
-    std::FILE* f = std::fopen(argv[5], "w");
-    if (f == nullptr) {
-      std::fprintf(stderr, "%s: cannot write\n", argv[5]);
-      return 2;
-    }
+    std::FILE* f = open_csv(argv[5]);
+    if (f == nullptr) return 2;
     std::fprintf(f, "x,y,ds,eng,wall\n");
     for (const auto& q : samples)
       std::fprintf(f, "%.3f,%.3f,%.4f,%.1f,%.3f\n", q.position.x, q.position.y, q.length_mm,
@@ -51,11 +53,8 @@ int main(int argc, char** argv) {
   }
   if (argc == 7) {
     // x, y of each residual pixel's centre (material the tool reaches and the program left).
-    std::FILE* f = std::fopen(argv[6], "w");
-    if (f == nullptr) {
-      std::fprintf(stderr, "%s: cannot write\n", argv[6]);
-      return 2;
-    }
+    std::FILE* f = open_csv(argv[6]);
+    if (f == nullptr) return 2;
     std::fprintf(f, "x,y\n");
     for (const Vec2& q : residual)
       std::fprintf(f, "%.3f,%.3f\n", q.x, q.y);

@@ -140,6 +140,15 @@ void expect_correct(const Pocket& p, const Outcome& o, double within20,
   }
 }
 
+// A pocket of tests/data/pocket (one of bench/pocket_random.sh's) generated, swept and held
+// to no gouge and the residual allowance; the engagement is left to the caller.
+Outcome expect_random_pocket_correct(const std::string& file, double tool_d, double stepover_mm) {
+  const Pocket p = load(file);
+  Outcome o = run(p, tool_d, stepover_mm);
+  expect_correct(p, o, -1.0);
+  return o;
+}
+
 TEST(AdaptivePocket, LPocket) {
   const Pocket l = scaled(load("l_pocket_islands.json"), 0.6);
   Pocket plain = make_pocket(l.outer(), {}, "L 60x48").value();
@@ -285,9 +294,7 @@ TEST(AdaptivePocket, IslandNearlyClosingTheWayAlongAWall) {
 // corner, which alternating projections left after 16 rounds (push_out_of_walls). Gouge
 // and residual only: 0.5 mm of near slot is left next to that wedge (docs/pocket.md).
 TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
-  const Pocket p = load("random_seed48.json");
-  const Outcome o = run(p, 12.0, 1.8);
-  expect_correct(p, o, -1.0);
+  const Outcome o = expect_random_pocket_correct("random_seed48.json", 12.0, 1.8);
   EXPECT_GE(o.sweep.within_20pct, 0.82);
 }
 
@@ -297,9 +304,7 @@ TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
 // straight way there nor one through its midpoint kept off the corner's arc: 11.5 mm^2 left
 // in the sweep. The visit now goes by more points pushed out of the walls.
 TEST(AdaptivePocket, RandomPocketWhoseCentresEndInAWedgeRoundAnIslandCorner) {
-  const Pocket p = load("random_seed132.json");
-  const Outcome o = run(p, 16.0, 2.4);
-  expect_correct(p, o, -1.0);
+  const Outcome o = expect_random_pocket_correct("random_seed132.json", 16.0, 2.4);
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
@@ -309,9 +314,7 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInAWedgeRoundAnIslandCorner) {
 // tip visits' reach of 5 mm, and the sweep found a crescent of 11 mm^2 beside the island;
 // the farther tip is now visited from the nearer one.
 TEST(AdaptivePocket, RandomPocketWhoseCentresEndInTwoTipsSideBySide) {
-  const Pocket p = load("random_seed504.json");
-  const Outcome o = run(p, 20.0, 6.0);
-  expect_correct(p, o, -1.0);
+  const Outcome o = expect_random_pocket_correct("random_seed504.json", 20.0, 6.0);
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
@@ -320,9 +323,7 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInTwoTipsSideBySide) {
 // pixel clearance, which can read half a pixel long beside a curved wall); ramps are held
 // to the exact walls now, as every other move.
 TEST(AdaptivePocket, RandomPocketWhoseRampRunsBesideARoundIsland) {
-  const Pocket p = load("random_seed528.json");
-  const Outcome o = run(p, 3.0, 0.24);
-  expect_correct(p, o, -1.0);
+  expect_random_pocket_correct("random_seed528.json", 3.0, 0.24);
 }
 
 // Pocket 541 of bench/pocket_random.sh (ø12 at 5 %): the tool comes through a neck 0.28 mm
@@ -330,9 +331,7 @@ TEST(AdaptivePocket, RandomPocketWhoseRampRunsBesideARoundIsland) {
 // theta_max cutting more than twice the target. The chooser's straight move for open space
 // ploughed on at 145-177 degrees (2.3 mm of full slot by the bench sweep); it nibbles now.
 TEST(AdaptivePocket, RandomPocketWhereTheToolLeavesANeckIntoUncutMaterial) {
-  const Pocket p = load("random_seed541.json");
-  const Outcome o = run(p, 12.0, 0.6);
-  expect_correct(p, o, -1.0);
+  const Outcome o = expect_random_pocket_correct("random_seed541.json", 12.0, 0.6);
   EXPECT_LE(o.sweep.slot_length_mm, 0.5);  // the neck itself: every move there is a slot
 }
 
