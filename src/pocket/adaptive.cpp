@@ -440,15 +440,6 @@ double path_time_s(const LinkedPath& lp, const pocket::LinkCosts& c) {
   return t;
 }
 
-Move make_move(MoveKind kind, Vec3 end, double feed, bool cutting) {
-  Move mv;
-  mv.kind = kind;
-  mv.end = end;
-  mv.feed_mm_min = feed;
-  mv.cutting = cutting;
-  return mv;
-}
-
 // Entry moves of one layer from z_from down to z_to.
 void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z_from,
                  double z_to) {

@@ -461,18 +461,10 @@ class Builder : public voxel_detail::LinkSearch {
     for_cells(a, b, [&](std::size_t c) { cleared_[c] = 1; });
   }
 
-  static Move make(MoveKind kind, Vec3 end, double feed, bool cutting) {
-    Move mv;
-    mv.kind = kind;
-    mv.end = end;
-    mv.feed_mm_min = feed;
-    mv.cutting = cutting;
-    return mv;
-  }
-  void rapid(Vec3 p) { add(make(MoveKind::kRapid, p, 0.0, false)); }
-  void feed(Vec3 p, double f, bool cutting) { add(make(MoveKind::kFeed, p, f, cutting)); }
+  void rapid(Vec3 p) { add(make_move(MoveKind::kRapid, p, 0.0, false)); }
+  void feed(Vec3 p, double f, bool cutting) { add(make_move(MoveKind::kFeed, p, f, cutting)); }
   void plunge(double z) {
-    add(make(MoveKind::kPlunge, to_vec3(pos_, z), p_.plunge_feed_mm_min, true));
+    add(make_move(MoveKind::kPlunge, to_vec3(pos_, z), p_.plunge_feed_mm_min, true));
   }
   void add(Move mv) {
     if (has_last_ && mv.end == last_) return;

@@ -47,6 +47,17 @@ struct Move {
   bool is_arc() const { return kind == MoveKind::kArc || kind == MoveKind::kHelix; }
 };
 
+/// A move to `end` of the given kind, feed (mm/min; 0 for rapids) and cutting flag, its
+/// other fields at their defaults (arcs set their centre and direction afterwards).
+inline Move make_move(MoveKind kind, Vec3 end, double feed_mm_min, bool cutting) {
+  Move mv;
+  mv.kind = kind;
+  mv.end = end;
+  mv.feed_mm_min = feed_mm_min;
+  mv.cutting = cutting;
+  return mv;
+}
+
 enum class Coolant : std::uint8_t { kOff, kFlood, kMist };
 
 /// One operation's moves with the tool and spindle it runs with.
