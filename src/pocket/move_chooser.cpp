@@ -460,33 +460,26 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       if (!c.valid) {
         c = chooser.boundary_move(last_theta);
         kind = StepKind::kBoundary;
-        // Our addition: Algorithm 4 follows the boundary whatever lies ahead, and where the
-        // room between an island and a wall is narrower than about one stepover the
-        // boundary runs through uncut material: a full slot round the island. When the
-        // boundary move would cut above the band, nibble instead with the move that cuts
-        // least, if it takes clearly less (10 %; a near tie only perturbs the path). It
-        // costs path length there; on the benchmark pockets it also lowers the largest
-        // engagement (L 133 -> 106 deg, Kiri:Moto 83 -> 65 deg). Test:
-        // AdaptivePocket.IslandsLessThanAMillimetreFromTheWalls.
-        if (c.valid && near && c.eng > m.target_px + m.tol_px) {
-          const Candidate l = chooser.least_cutting_move();
-          if (l.valid && l.eng < 0.9 * stock.probe_disk(c.p)) {
-            c = l;
-            kind = StepKind::kCut;
-          }
+        if (!c.valid) {
+          // Neither: open space all round. Go straight until something is met (our
+          // addition; the paper's strategy would stop here).
+          c = chooser.get(0);
+          kind = StepKind::kLink;
+          if (c.eng < 0) break;
         }
-      }
-      if (!c.valid) {
-        // Neither: open space all round. Go straight until something is met (our
-        // addition; the paper's strategy would stop here).
-        c = chooser.get(0);
-        kind = StepKind::kLink;
-        if (c.eng < 0) break;
-        // No wall within reach, but every move within theta_max cuts nothing or more than
-        // twice the target: the tool faces a front of uncut material all round, as where
-        // it comes out of a neck about as wide as itself into uncut space (random pocket
-        // seed 541, ø12 through a neck with 0.28 mm of room: the straight move ploughed on
-        // at 145-177 degrees for 2.3 mm). Nibble as along the boundary above.
+        // Our addition: neither fallback looks at what lies ahead. Algorithm 4 follows the
+        // boundary, and where the room between an island and a wall is narrower than about
+        // one stepover the boundary runs through uncut material: a full slot round the
+        // island. With no wall within reach the straight move goes on whatever it cuts: out
+        // of a neck about as wide as the tool into uncut material every move within
+        // theta_max cuts nothing or more than twice the target (random pocket seed 541, ø12
+        // through a neck with 0.28 mm of room: 2.3 mm at 145-177 degrees). When the fallback
+        // would cut above the band, nibble instead with the move that cuts least, if it
+        // takes clearly less (10 %; a near tie only perturbs the path). It costs path length
+        // there; on the benchmark pockets it also lowers the largest engagement (L 133 -> 106
+        // deg, Kiri:Moto 83 -> 65 deg). Tests:
+        // AdaptivePocket.IslandsLessThanAMillimetreFromTheWalls,
+        // RandomPocketWhereTheToolLeavesANeckIntoUncutMaterial.
         if (near && c.eng > m.target_px + m.tol_px) {
           const Candidate l = chooser.least_cutting_move();
           if (l.valid && l.eng < 0.9 * stock.probe_disk(c.p)) {
