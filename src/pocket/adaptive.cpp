@@ -218,17 +218,29 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
   const double reach = m.radius_mm + m.wall_stock_mm;
   const PolygonSet centres = offset(m.region, -on);
   std::vector<Vec2> tips;
+  std::vector<double> tip_near;  // per tip, how far from the path it is still visited
+  const double near = std::max(kTipReachPx * m.h, 0.5 * m.radius_mm);
   for (const Ring& r : centres.rings)
     for (std::size_t k = 0, n = r.size(); k < n; ++k) {
       const Vec2 a = r[(k + n - 1) % n], b = r[k], c = r[(k + 1) % n];
       const Vec2 u = b - a, v = c - b;
       // Interior on the left: a left turn of more than 20 degrees is a sharp convex corner
       // (the round joins of the offset turn by a few degrees per vertex).
-      if (cross(u, v) > 0.0 && std::atan2(cross(u, v), dot(u, v)) > deg_to_rad(20.0))
-        tips.push_back(b);
+      const double turn = std::atan2(cross(u, v), dot(u, v));
+      if (cross(u, v) <= 0.0 || turn <= deg_to_rad(20.0)) continue;
+      tips.push_back(b);
+      // The free pixels end about 1.5 pixels (the half-pixel margin and the sampling) /
+      // sin(half the tip's angle) short of the exact tip. Past 8.6 degrees that is within
+      // `near`; a sharper tip is visited from as far as that shortfall (session 16: random
+      // pocket seed 710, ø16 between a round wall and an island's straight edge 16.3 mm
+      // apart, nearly tangent: the region of centres ends in a 6.6 degree sliver, the path
+      // stopped 4.2 mm short of its tip and 4.7 mm^2 were left on both sides). At most R: the
+      // way there is clear of the walls, but a long one would cut as a slot.
+      const double half_tip = 0.5 * (kPi - turn);
+      tip_near.push_back(
+          std::max(near, std::min(1.5 * m.h / std::max(std::sin(half_tip), 1e-3), m.radius_mm)));
     }
   if (tips.empty() || lp.pts.size() < 2) return;
-  const double near = std::max(kTipReachPx * m.h, 0.5 * m.radius_mm);
   auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-7; };
   // The straight way from `from` to the tip t, else one through 1, 3, 7 or 15 points spread
   // along it and pushed out of the walls; empty when none keeps clear. The straight way
@@ -281,7 +293,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
     }
     if (reached < 0.05 * m.h) continue;
     if (m.walls.distance(t) < reach - 1e-9 || !m.walls.inside(t)) continue;
-    if (best > near) {
+    if (best > tip_near[ti]) {
       pending[ti] = true;
       continue;
     }
@@ -297,7 +309,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
     for (std::size_t ti = 0; ti < tips.size(); ++ti) {
       if (!pending[ti]) continue;
       const Vec2 t = tips[ti];
-      double best = near;
+      double best = tip_near[ti];
       const Visited* from = nullptr;
       for (const Visited& v : visited) {
         const double d = distance(visits[v.at][v.index].back(), t);

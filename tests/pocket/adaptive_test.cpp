@@ -335,6 +335,16 @@ TEST(AdaptivePocket, RandomPocketWhereTheToolLeavesANeckIntoUncutMaterial) {
   EXPECT_LE(o.sweep.slot_length_mm, 0.5);  // the neck itself: every move there is a slot
 }
 
+// Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
+// square island's top edge, nearly tangent to it, the region of tool centres is a sliver
+// 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
+// the tip, just beyond the tip visits' reach of half the radius, and 4.7 mm^2 were left on
+// both sides of the sliver; the reach of a sharp tip now grows with its sharpness.
+TEST(AdaptivePocket, RandomPocketWhoseCentresEndInANearlyTangentSliver) {
+  const Outcome o = expect_random_pocket_correct("random_seed710.json", 16.0, 4.8);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
