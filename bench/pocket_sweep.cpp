@@ -1,6 +1,8 @@
 // Judges any pocket G-code with the independent sweep of tests/pocket/sweep_checker.cpp:
-//   swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG PROGRAM.nc [SAMPLES.csv
-//                      [RESIDUAL.csv]]
+//   swarf_pocket_sweep [--wall-stock S] POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG
+//                      PROGRAM.nc [SAMPLES.csv [RESIDUAL.csv]]
+// With --wall-stock the pocket is judged shrunk by S mm (Clipper offset, round joins): the
+// tool must keep S off the walls and clear up to there.
 // Prints one line of figures (gouge, residual, cutting length, engagement within +-20 % of
 // the target by contact arc and by removal, largest engagement, full-slot length). Used by
 // bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
@@ -10,15 +12,22 @@
 
 #include "../tests/pocket/sweep_checker.cpp"
 #include "swarf/gcode/gcode.h"
+#include "swarf/polygon/polygon.h"
 #include "swarf/pocket/pocket_input.h"
 #include "swarf/toolpath/metrics.h"
 
 int main(int argc, char** argv) {
   using namespace swarf;
+  double wall_stock = 0.0;
+  if (argc >= 3 && std::string(argv[1]) == "--wall-stock") {
+    wall_stock = std::atof(argv[2]);
+    argv += 2;
+    argc -= 2;
+  }
   if (argc < 5 || argc > 7) {
     std::fprintf(stderr,
-                 "usage: swarf_pocket_sweep POCKET.json TOOL_DIAMETER TARGET_DEG PROGRAM.nc "
-                 "[SAMPLES.csv [RESIDUAL.csv]]\n");
+                 "usage: swarf_pocket_sweep [--wall-stock S] POCKET.json TOOL_DIAMETER "
+                 "TARGET_DEG PROGRAM.nc [SAMPLES.csv [RESIDUAL.csv]]\n");
     return 2;
   }
   auto pocket = read_pocket(argv[1]);
@@ -34,7 +43,9 @@ int main(int argc, char** argv) {
   const double d = std::atof(argv[2]), target = std::atof(argv[3]);
   std::vector<testing::SweepSample> samples;
   std::vector<Vec2> residual;
-  const auto s = testing::sweep_check(pocket->region, 0.5 * d, *program, target, 0.05, 0.2,
+  const PolygonSet region =
+      wall_stock > 0.0 ? offset(pocket->region, -wall_stock) : pocket->region;
+  const auto s = testing::sweep_check(region, 0.5 * d, *program, target, 0.05, 0.2,
                                       &samples, 0.5, &residual);
   auto open_csv = [](const char* path) {
     std::FILE* f = std::fopen(path, "w");
