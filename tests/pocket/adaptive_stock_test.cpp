@@ -1,0 +1,141 @@
+// The adaptive pocket's stock-to-leave and milling-direction options, judged by the
+// independent sweep (tests/pocket/sweep_checker.cpp) and by the program's own heights.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "pocket/sweep_checker.h"
+#include "swarf/pocket/adaptive.h"
+
+namespace swarf {
+namespace {
+
+constexpr double kCheckerPixel = 0.08;
+constexpr double kWallTol = 0.25;
+
+Pocket load(const std::string& name) {
+  auto p = read_pocket(std::string(SWARF_TEST_DATA_DIR) + "/pocket/" + name);
+  EXPECT_TRUE(p.ok()) << p.status().to_string();
+  return p.value();
+}
+
+Pocket l_pocket_60x48() {
+  const Pocket l = load("l_pocket_islands.json");
+  Ring outer;
+  for (Vec2 q : l.outer())
+    outer.push_back(q * 0.6);
+  std::vector<Ring> islands;
+  for (std::size_t k = 1; k < l.region.rings.size(); ++k) {
+    islands.push_back({});
+    for (Vec2 q : l.region.rings[k])
+      islands.back().push_back(q * 0.6);
+  }
+  return make_pocket(outer, islands, "L 60x48 with islands").value();
+}
+
+Pocket round_pocket(double radius_mm) {
+  Ring r;
+  for (int k = 0; k < 180; ++k)
+    r.push_back(Vec2{std::cos(kPi * k / 90), std::sin(kPi * k / 90)} * radius_mm);
+  return make_pocket(r, {}, "round").value();
+}
+
+Tool flat_mill(double diameter_mm) {
+  Tool t;
+  t.diameter_mm = diameter_mm;
+  return t;
+}
+
+AdaptiveResult generate(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
+  auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
+  EXPECT_TRUE(r.ok()) << r.status().to_string();
+  return r.ok() ? r.value() : AdaptiveResult{};
+}
+
+testing::SweepReport sweep(const PolygonSet& region, double tool_d, const AdaptiveResult& r) {
+  const auto s = testing::sweep_check(region, 0.5 * tool_d, r.toolpath, r.target_engagement_deg,
+                                      kCheckerPixel, kWallTol);
+  std::printf("  gouge %.4f mm, residual %.2f mm2, within20 %.1f %%, slot %.1f mm\n",
+              s.max_gouge_mm, s.residual_mm2, 100 * s.within_20pct, s.slot_length_mm);
+  return s;
+}
+
+// Wall stock: judged on the pocket shrunk by the stock, the tool never comes nearer the walls
+// and islands than the stock and clears up to it; judged on the pocket itself, the band
+// between kWallTol and the stock is left all round (a path that ignored the stock would
+// leave nothing there).
+TEST(AdaptivePocketStock, WallStockIsLeftOnWallsAndIslands) {
+  const Pocket l = l_pocket_60x48();
+  AdaptiveParams ap;
+  ap.stepover_mm = 1.6;
+  ap.depth_mm = 3.0;
+  ap.wall_stock_mm = 0.5;
+  const AdaptiveResult r = generate(l, 8.0, ap);
+  const PolygonSet shrunk = offset(l.region, -ap.wall_stock_mm);
+  const auto inner = sweep(shrunk, 8.0, r);
+  // The shrunk outline's round joins are chords within 1 um of the true offset.
+  EXPECT_LE(inner.max_gouge_mm, 0.002);
+  EXPECT_LE(inner.residual_mm2, 0.5);
+  const auto outer = sweep(l.region, 8.0, r);
+  EXPECT_LE(outer.max_gouge_mm, 0.0);
+  // The band 0.25 to 0.5 mm off the walls (more is left in the corners).
+  const double band_mm2 = (ap.wall_stock_mm - kWallTol) * perimeter(shrunk);
+  EXPECT_GE(outer.residual_mm2, 0.8 * band_mm2);
+}
+
+// Floor stock: no move goes below the top minus the depth plus the floor stock, and the
+// floor pass is at exactly that height, in every layer's last one.
+TEST(AdaptivePocketStock, FloorStockIsLeftOnTheFloor) {
+  const Pocket l = l_pocket_60x48();
+  AdaptiveParams ap;
+  ap.stepover_mm = 1.6;
+  ap.depth_mm = 3.0;
+  ap.stepdown_mm = 1.0;
+  ap.floor_stock_mm = 0.4;
+  const AdaptiveResult r = generate(l, 8.0, ap);
+  double lowest = 1e9;
+  for (const Move& mv : r.toolpath.moves)
+    lowest = std::min(lowest, mv.end.z);
+  EXPECT_NEAR(lowest, ap.top_z_mm - ap.depth_mm + ap.floor_stock_mm, 1e-9);
+  const auto s = sweep(l.region, 8.0, r);
+  EXPECT_LE(s.max_gouge_mm, 0.0);
+  EXPECT_LE(s.residual_mm2, 0.4);
+}
+
+// The turning sense of the cutting moves about the centre of a round pocket: a spiral
+// growing outwards with the material on its right (climb milling, spindle M3) turns
+// counter-clockwise; conventional milling turns the other way. Both clear the pocket.
+double turning_sense(const Toolpath& t) {
+  double sum = 0.0;
+  for (std::size_t k = 1; k < t.moves.size(); ++k) {
+    const Move& a = t.moves[k - 1];
+    const Move& b = t.moves[k];
+    if (b.kind != MoveKind::kFeed || !b.cutting || b.end.z > -2.9) continue;
+    const Vec2 p{a.end.x, a.end.y}, q{b.end.x, b.end.y};
+    sum += cross(p, q - p);
+  }
+  return sum;
+}
+
+TEST(AdaptivePocketStock, ConventionalMillingTurnsTheOtherWay) {
+  const Pocket p = round_pocket(20.0);
+  AdaptiveParams ap;
+  ap.stepover_mm = 1.2;
+  ap.depth_mm = 3.0;
+  const AdaptiveResult climb = generate(p, 6.0, ap);
+  ap.climb = false;
+  const AdaptiveResult conventional = generate(p, 6.0, ap);
+  EXPECT_GT(turning_sense(climb.toolpath), 0.0);
+  EXPECT_LT(turning_sense(conventional.toolpath), 0.0);
+  for (const AdaptiveResult* r : {&climb, &conventional}) {
+    const auto s = sweep(p.region, 6.0, *r);
+    EXPECT_LE(s.max_gouge_mm, 0.0);
+    EXPECT_LE(s.residual_mm2, 0.1);
+    EXPECT_GE(s.within_20pct, 0.9);
+  }
+}
+
+}  // namespace
+}  // namespace swarf
