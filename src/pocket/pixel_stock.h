@@ -199,6 +199,11 @@ class PixelStock {
   /// some value above it), e.g. 0 to ask "is there any?".
   int material_in_disk(Vec2 centre, double radius_mm, int enough = kNoLimit) const;
   int stamp(Vec2 centre, CutVisitor visit = nullptr, void* user = nullptr);
+  /// Puts back a pixel a cut removed (the raw path dropped the move that cut it).
+  void restore(int i, int j) {
+    material_.set(i, j, true);
+    material_blocks_.set(i >> kBlockShift, j >> kBlockShift, true);
+  }
 
  private:
   // Calls fn(j, x0, x1) for the row pieces of disk(to) \ disk(from) that may hold a set
