@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pocket/adaptive_test_util.h"
 #include "pocket/sweep_checker.h"
 #include "swarf/pocket/adaptive.h"
 
@@ -15,24 +16,13 @@ namespace {
 constexpr double kCheckerPixel = 0.08;
 constexpr double kWallTol = 0.25;
 
-Pocket load(const std::string& name) {
-  auto p = read_pocket(std::string(SWARF_TEST_DATA_DIR) + "/pocket/" + name);
-  EXPECT_TRUE(p.ok()) << p.status().to_string();
-  return p.value();
-}
+using testing::flat_mill;
+using testing::params_3mm_deep;
 
 Pocket l_pocket_60x48() {
-  const Pocket l = load("l_pocket_islands.json");
-  Ring outer;
-  for (Vec2 q : l.outer())
-    outer.push_back(q * 0.6);
-  std::vector<Ring> islands;
-  for (std::size_t k = 1; k < l.region.rings.size(); ++k) {
-    islands.push_back({});
-    for (Vec2 q : l.region.rings[k])
-      islands.back().push_back(q * 0.6);
-  }
-  return make_pocket(outer, islands, "L 60x48 with islands").value();
+  Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
+  l.source = "L 60x48 with islands";
+  return l;
 }
 
 Pocket round_pocket(double radius_mm) {
@@ -40,12 +30,6 @@ Pocket round_pocket(double radius_mm) {
   for (int k = 0; k < 180; ++k)
     r.push_back(Vec2{std::cos(kPi * k / 90), std::sin(kPi * k / 90)} * radius_mm);
   return make_pocket(r, {}, "round").value();
-}
-
-Tool flat_mill(double diameter_mm) {
-  Tool t;
-  t.diameter_mm = diameter_mm;
-  return t;
 }
 
 AdaptiveResult generate(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
@@ -68,9 +52,7 @@ testing::SweepReport sweep(const PolygonSet& region, double tool_d, const Adapti
 // leave nothing there).
 TEST(AdaptivePocketStock, WallStockIsLeftOnWallsAndIslands) {
   const Pocket l = l_pocket_60x48();
-  AdaptiveParams ap;
-  ap.stepover_mm = 1.6;
-  ap.depth_mm = 3.0;
+  AdaptiveParams ap = params_3mm_deep(1.6);
   ap.wall_stock_mm = 0.5;
   const AdaptiveResult r = generate(l, 8.0, ap);
   const PolygonSet shrunk = offset(l.region, -ap.wall_stock_mm);
@@ -86,12 +68,10 @@ TEST(AdaptivePocketStock, WallStockIsLeftOnWallsAndIslands) {
 }
 
 // Floor stock: no move goes below the top minus the depth plus the floor stock, and the
-// floor pass is at exactly that height, in every layer's last one.
+// floor pass is at exactly that height.
 TEST(AdaptivePocketStock, FloorStockIsLeftOnTheFloor) {
   const Pocket l = l_pocket_60x48();
-  AdaptiveParams ap;
-  ap.stepover_mm = 1.6;
-  ap.depth_mm = 3.0;
+  AdaptiveParams ap = params_3mm_deep(1.6);
   ap.stepdown_mm = 1.0;
   ap.floor_stock_mm = 0.4;
   const AdaptiveResult r = generate(l, 8.0, ap);
@@ -121,9 +101,7 @@ double turning_sense(const Toolpath& t) {
 
 TEST(AdaptivePocketStock, ConventionalMillingTurnsTheOtherWay) {
   const Pocket p = round_pocket(20.0);
-  AdaptiveParams ap;
-  ap.stepover_mm = 1.2;
-  ap.depth_mm = 3.0;
+  AdaptiveParams ap = params_3mm_deep(1.2);
   const AdaptiveResult climb = generate(p, 6.0, ap);
   ap.climb = false;
   const AdaptiveResult conventional = generate(p, 6.0, ap);
@@ -143,10 +121,8 @@ TEST(AdaptivePocketStock, ConventionalMillingTurnsTheOtherWay) {
 // in crescents beside the round island. The stock gets them back now, and later moves
 // take most of them.
 TEST(AdaptivePocketStock, RandomPocketWhereDroppedIdleMovesLeftCrumbs) {
-  const Pocket p = load("random_seed24.json");
-  AdaptiveParams ap;
-  ap.stepover_mm = 6.4;
-  ap.depth_mm = 3.0;
+  const Pocket p = testing::load_test_pocket("random_seed24.json");
+  AdaptiveParams ap = params_3mm_deep(6.4);
   ap.wall_stock_mm = 0.3;
   ap.climb = false;
   const AdaptiveResult r = generate(p, 16.0, ap);

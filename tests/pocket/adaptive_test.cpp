@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "pocket/adaptive_test_util.h"
 #include "pocket/sweep_checker.h"
 #include "swarf/pocket/adaptive.h"
 #include "swarf/toolpath/metrics.h"
@@ -14,23 +15,12 @@
 namespace swarf {
 namespace {
 
-Pocket load(const std::string& name) {
-  auto p = read_pocket(std::string(SWARF_TEST_DATA_DIR) + "/pocket/" + name);
-  EXPECT_TRUE(p.ok()) << p.status().to_string();
-  return p.value();
-}
+using testing::flat_mill;
+using testing::params_3mm_deep;
+using testing::scaled;
 
-Pocket scaled(const Pocket& p, double s) {
-  Ring outer;
-  for (Vec2 q : p.outer())
-    outer.push_back(q * s);
-  std::vector<Ring> islands;
-  for (std::size_t k = 1; k < p.region.rings.size(); ++k) {
-    islands.push_back({});
-    for (Vec2 q : p.region.rings[k])
-      islands.back().push_back(q * s);
-  }
-  return make_pocket(outer, islands, p.source).value();
+Pocket load(const std::string& name) {
+  return testing::load_test_pocket(name);
 }
 
 Pocket star(double r_out, double r_in, int points) {
@@ -71,20 +61,6 @@ struct Outcome {
   AdaptiveResult result;
   testing::SweepReport sweep;
 };
-
-// A flat end mill (Tool's defaults), built here so the tests need no tool parser.
-Tool flat_mill(double diameter_mm) {
-  Tool t;
-  t.diameter_mm = diameter_mm;
-  return t;
-}
-
-AdaptiveParams params_3mm_deep(double stepover_mm) {
-  AdaptiveParams ap;
-  ap.stepover_mm = stepover_mm;
-  ap.depth_mm = 3.0;
-  return ap;
-}
 
 Result<AdaptiveResult> generate(const Pocket& p, double tool_d, double stepover_mm) {
   return adaptive_pocket(p, flat_mill(tool_d), params_3mm_deep(stepover_mm));

@@ -1,0 +1,49 @@
+// Helpers shared by the adaptive pocket's tests: test pockets, a flat end mill, parameters.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "swarf/pocket/adaptive.h"
+
+namespace swarf::testing {
+
+// A pocket of tests/data/pocket.
+inline Pocket load_test_pocket(const std::string& name) {
+  auto p = read_pocket(std::string(SWARF_TEST_DATA_DIR) + "/pocket/" + name);
+  EXPECT_TRUE(p.ok()) << p.status().to_string();
+  return p.value();
+}
+
+// The pocket scaled by s about the origin.
+inline Pocket scaled(const Pocket& p, double s) {
+  Ring outer;
+  for (Vec2 q : p.outer())
+    outer.push_back(q * s);
+  std::vector<Ring> islands;
+  for (std::size_t k = 1; k < p.region.rings.size(); ++k) {
+    islands.push_back({});
+    for (Vec2 q : p.region.rings[k])
+      islands.back().push_back(q * s);
+  }
+  return make_pocket(outer, islands, p.source).value();
+}
+
+// A flat end mill (Tool's defaults), built here so the tests need no tool parser.
+inline Tool flat_mill(double diameter_mm) {
+  Tool t;
+  t.diameter_mm = diameter_mm;
+  return t;
+}
+
+// A stepover and a 3 mm deep pocket, the rest defaults.
+inline AdaptiveParams params_3mm_deep(double stepover_mm) {
+  AdaptiveParams ap;
+  ap.stepover_mm = stepover_mm;
+  ap.depth_mm = 3.0;
+  return ap;
+}
+
+}  // namespace swarf::testing
