@@ -262,8 +262,9 @@ const std::array<Vec2, 24> kRingDirs = [] {
   return d;
 }();
 
-// Less material than this left in all ends the search (unless a quarter of a step's
-// worth is less still): the stated residual tolerance is 0.1 mm^2 per corner.
+// Less material than this left in all ends the search over the whole stock (unless a
+// quarter of a step's worth is less still; the windowed search keeps the quarter step): the stated
+// residual tolerance is 0.1 mm^2 per corner.
 constexpr double kCrumbsLeftMm2 = 0.25;
 
 // Where to resume after the boundary round ended with reachable material left (our
@@ -444,18 +445,25 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   };
   RawPath raw;
   // The pixels removed by the idle moves of the raw path (each with its step's index).
-  // Dropping an idle tail puts them back: the stock must be what the kept path leaves.
-  // Before (session 16), up to cut_px pixels per dropped move stayed cut in the stock but
-  // not on the machine, and the crumbs they were were never looked for again (random
-  // pocket 24 with 0.3 mm of wall stock: 1.3 mm^2 in crescents beside a round island).
+  // Only idle moves are ever dropped (drop_steps_from), and dropping them puts their pixels
+  // back: the stock must be what the kept path leaves. Before (session 16), up to cut_px
+  // pixels per dropped move stayed cut in the stock but not on the machine, and nothing
+  // went back for those crumbs (random pocket 24 with 0.3 mm of wall stock: 1.3 mm^2 in
+  // crescents beside a round island).
   std::vector<IdleCut> idle_cuts;
-  auto restore_idle_cuts = [&](std::size_t kept_steps) {
-    while (!idle_cuts.empty() && idle_cuts.back().step >= kept_steps) {
+  // Keeps the first `kept` steps of the raw path, giving the stock back what the others cut.
+  auto drop_steps_from = [&](std::size_t kept) {
+    while (!idle_cuts.empty() && idle_cuts.back().step >= kept) {
       const IdleCut& q = idle_cuts.back();
       if (m.walls.distance(m.grid.to_world(q.i, q.j)) > m.wall_stock_mm + kWallCrumbMm)
         stock.restore(q.i, q.j);
       idle_cuts.pop_back();
     }
+    raw.eng.resize(kept);
+    raw.kind.resize(kept);
+    raw.jump.resize(kept);
+    raw.entry.resize(kept);
+    raw.pts.resize(kept + 1);
   };
   Chooser chooser(m, stock);
   Vec2 pos = entry.start;
@@ -576,12 +584,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
           cut_since_shortcut = false;
           short_i = si;
           short_j = sj;
-          restore_idle_cuts(tail);
-          raw.eng.resize(tail);
-          raw.kind.resize(tail);
-          raw.jump.resize(tail);
-          raw.entry.resize(tail);
-          raw.pts.resize(tail + 1);
+          drop_steps_from(tail);
           raw.eng.push_back(0);
           raw.kind.push_back(StepKind::kLink);
           raw.jump.push_back(true);
@@ -599,15 +602,11 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     // stays even when its session cut nothing more: its helix or ramp has cut the stock,
     // and the moves after it were chosen on that stock (dropped, the final path met the
     // ramp's material uncut, in a full slot).
-    while (!raw.eng.empty() && raw.eng.back() <= m.cut_px &&
-           !(raw.jump.back() && raw.entry.back() >= 0)) {
-      raw.eng.pop_back();
-      raw.kind.pop_back();
-      raw.jump.pop_back();
-      raw.entry.pop_back();
-      raw.pts.pop_back();
-    }
-    restore_idle_cuts(raw.eng.size());
+    std::size_t kept = raw.eng.size();
+    while (kept > 0 && raw.eng[kept - 1] <= m.cut_px &&
+           !(raw.jump[kept - 1] && raw.entry[kept - 1] >= 0))
+      --kept;
+    drop_steps_from(kept);
     pos = raw.pts.back();
     if (raw.eng.size() >= max_steps || iterations >= max_steps) break;
     // A resumed session that cut nothing gives up the material within a tool radius of the
