@@ -412,7 +412,15 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   // Whether a move's contact arc reaches kSlotDeg: the front half of a circle just outside
   // the tool (whose own disk at `at` is cleared) sampled every two degrees, from the sides
   // inwards, stopping as soon as enough samples miss the material (most moves: a few).
-  constexpr double kSlotDeg = 170.0;
+  // A sample in a wall or island counts as contact: where the tool rides tangent to one, the
+  // material reaches the tangent point, and the circle outside the tool runs a few degrees
+  // through the wall there. The independent sweep counts a slot from 170 degrees; the test
+  // stops at 160, because its samples read the arc up to 15 degrees short: a ø20 going
+  // through a neck 0.33 mm wider than itself read 166 degrees here at its worst step and 180
+  // by the sweep, 1.8 mm of full slot (random pocket 810; the 98 pockets of seeds 500-548 and
+  // 800-848 had 21 mm of slot, 6.5 mm after, most of it first moves out of a straight plunge
+  // and tip visits into wedges narrower than the tool, where every way in is a slot).
+  constexpr double kSlotDeg = 160.0;
   constexpr int kSamples = 90, kMayMiss = kSamples - static_cast<int>(kSlotDeg / 2.0);
   const double ring_px = (m.radius_mm + 0.5 * m.h) / m.h;
   auto slot_like = [&](Vec2 at, Vec2 d) {
@@ -424,8 +432,8 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       const double a = base + deg_to_rad(k);
       const int i = round_half_away(q.x + ring_px * std::cos(a));
       const int j = round_half_away(q.y + ring_px * std::sin(a));
-      const bool hit =
-          i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height && stock.material().get(i, j);
+      const bool hit = i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height &&
+                       (stock.material().get(i, j) || stock.forbidden().get(i, j));
       if (!hit && ++missed > kMayMiss) return false;
     }
     return true;

@@ -311,6 +311,19 @@ TEST(AdaptivePocket, RandomPocketWhereTheToolLeavesANeckIntoUncutMaterial) {
   EXPECT_LE(o.sweep.slot_length_mm, 0.5);  // the neck itself: every move there is a slot
 }
 
+// Pocket 832 of bench/pocket_random.sh (ø12 at 30 %): a round island 12.07 mm from the left
+// wall, a neck 0.07 mm wider than the tool. The tool rode the wall into the neck with
+// material ahead of it out to both tangent points, and the no-slot test read the arc short:
+// its samples just outside the tool ran through the wall and the island near the tangent
+// points and counted as no contact. 1.3 mm of full slot by the bench's sweep (0.3 mm by
+// this one). Wall samples count as contact now and the test stops at 160 degrees: the
+// session ends at the neck, and the neck is taken once the far side is clear (each change
+// alone left 0.2-0.5 mm).
+TEST(AdaptivePocket, RandomPocketWhoseToolRodeAWallIntoANeckAsWideAsItself) {
+  const Outcome o = expect_random_pocket_correct("random_seed832.json", 12.0, 3.6);
+  EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
+}
+
 // Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
 // square island's top edge, nearly tangent to it, the region of tool centres is a sliver
 // 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
