@@ -2,13 +2,111 @@
 """A random pocket for the benchmarks (bench/pocket_random.sh, bench/compare_freecad_random.sh):
 a star, polygon, rectangle, circle or L outline up to 120 mm with 0-4 round or square islands
 (some nearer each other or a wall than the tool), a flat end mill of 3-20 mm and a stepover of
-5-40 % of its diameter. The same seed gives the same pocket.
+5-40 % of its diameter. Seeds from 2000 on give part-like outlines instead (part_like below).
+The same seed gives the same pocket.
 
   python3 bench/random_pocket.py SEED OUT.json    prints: diameter stepover shape islands
 """
 import json, math, random, sys
 seed, out = int(sys.argv[1]), sys.argv[2]
 random.seed(seed)
+
+
+def arc(cx, cy, r, a0, a1, n):
+    """n + 1 points on the circle from angle a0 to a1 (degrees)."""
+    return [[cx + r * math.cos(math.radians(a0 + (a1 - a0) * k / n)),
+             cy + r * math.sin(math.radians(a0 + (a1 - a0) * k / n))] for k in range(n + 1)]
+
+
+def rounded_rect(x0, y0, x1, y1, r):
+    """Counter-clockwise rectangle with corner radius r (0: sharp corners)."""
+    r = min(r, 0.5 * (x1 - x0), 0.5 * (y1 - y0))
+    if r <= 1e-9:
+        return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
+    n = 12
+    return (arc(x1 - r, y0 + r, r, -90, 0, n) + arc(x1 - r, y1 - r, r, 0, 90, n) +
+            arc(x0 + r, y1 - r, r, 90, 180, n) + arc(x0 + r, y0 + r, r, 180, 270, n))
+
+
+def part_like():
+    """Seeds from 2000 on: outlines as machined parts have them (kept apart so that the
+    pockets of the older seeds stay the same): a rounded rectangle whose corner radius is
+    below, at or above the tool's, a U whose legs are channels 1.05-3 tool diameters wide, a
+    ring round a boss, or a plate with bosses and slots, some of them a little more than a
+    tool diameter from a wall or from each other."""
+    D = random.choice([3, 4, 6, 8, 10, 12, 16, 20])
+    R = 0.5 * D
+    kind = random.choice(["rrect", "u", "ring", "bosses"])
+    rc = R * random.choice([0.0, 0.3, 0.8, 1.0, 1.02, 1.5, 2.5])
+    W = min(120.0, D * random.uniform(5, 14))
+    H = min(120.0, W * random.uniform(0.4, 1.0))
+    islands = []
+    if kind == "rrect":
+        outer = rounded_rect(0, 0, W, H, rc)
+    elif kind == "u":
+        leg = D * random.uniform(1.05, 3.0)
+        leg2 = D * random.uniform(1.05, 3.0)
+        base = D * random.uniform(1.05, 3.0)
+        W = max(W, leg + leg2 + D)
+        H = max(H, base + 2 * D)
+        outer = [[0, 0], [W, 0], [W, H], [W - leg2, H], [W - leg2, base], [leg, base],
+                 [leg, H], [0, H]]
+    elif kind == "ring":
+        gap = [D * random.uniform(1.02, 3.0) for _ in range(4)]
+        W = max(W, gap[0] + gap[1] + 2 * D)
+        H = max(H, gap[2] + gap[3] + 2 * D)
+        outer = rounded_rect(0, 0, W, H, rc)
+        isl_r = R * random.choice([0.0, 0.5, 1.0, 2.0])
+        islands.append(rounded_rect(gap[0], gap[2], W - gap[1], H - gap[3], isl_r)[::-1])
+    else:
+        outer = rounded_rect(0, 0, W, H, rc)
+        placed = []  # (x0, y0, x1, y1) boxes of the islands so far
+        for _ in range(random.randint(1, 5)):
+            for attempt in range(60):
+                if random.random() < 0.5:
+                    rad = D * random.uniform(0.3, 1.5)
+                    w = h = 2 * rad
+                else:
+                    w, h = D * random.uniform(0.5, 4.0), D * random.uniform(0.5, 1.5)
+                    if random.random() < 0.5:
+                        w, h = h, w
+                # Gaps to the walls and to the other islands: often just over a tool
+                # diameter, now and then less (material the tool cannot reach).
+                def gap():
+                    u = random.random()
+                    return D * (random.uniform(0.3, 1.0) if u < 0.15 else
+                                random.uniform(1.02, 1.3) if u < 0.6 else random.uniform(1.3, 3.0))
+                g, g2 = gap(), gap()
+                x0 = random.uniform(0, W - w)
+                y0 = random.uniform(0, H - h)
+                if random.random() < 0.5:
+                    x0 = random.choice([g, W - w - g])
+                if x0 < 0.3 or y0 < 0.3 or x0 + w > W - 0.3 or y0 + h > H - 0.3:
+                    continue
+                # Keep clear of rounded corners: the box must lie inside the outline.
+                box = (x0, y0, x0 + w, y0 + h)
+                if rc > 0 and any(math.hypot(cx - px, cy - py) > rc - 0.3
+                                  for cx, cy in [(rc, rc), (W - rc, rc), (rc, H - rc), (W - rc, H - rc)]
+                                  for px, py in [(max(box[0], min(cx, box[2])), max(box[1], min(cy, box[3])))]
+                                  if (px < rc or px > W - rc) and (py < rc or py > H - rc)):
+                    continue
+                if any(box[0] < b[2] + g2 and b[0] < box[2] + g2 and box[1] < b[3] + g2 and
+                       b[1] < box[3] + g2 for b in placed):
+                    continue
+                placed.append(box)
+                if w == h and random.random() < 0.7:
+                    islands.append(arc(x0 + w / 2, y0 + h / 2, w / 2, 360, 0, 40)[:-1])
+                else:
+                    islands.append(rounded_rect(*box, min(w, h) / 2 * random.choice([0, 0.5, 1]))[::-1])
+                break
+    json.dump({"outer": outer, "islands": islands}, open(out, "w"))
+    f = random.choice([0.05, 0.08, 0.1, 0.15, 0.2, 0.3, 0.4])
+    print(D, round(D * f, 3), kind, len(islands))
+
+
+if seed >= 2000:
+    part_like()
+    sys.exit(0)
 D = random.choice([3, 4, 6, 8, 10, 12, 16, 20])
 size = min(120, D * random.uniform(6, 14))
 kind = random.choice(["star", "rect", "poly", "circle", "lshape"])
