@@ -324,6 +324,23 @@ TEST(AdaptivePocket, RandomPocketWhoseToolRodeAWallIntoANeckAsWideAsItself) {
   EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
 }
 
+// Pocket 2010 of bench/pocket_random.sh (part-like, ø6 at 10 %): a tall rounded island
+// 6.24 mm from the top wall, a channel 0.24 mm wider than the tool. A new entry ramped
+// along the channel and its session cut nothing; the next session began with another entry
+// at once. Post-processing made only the last entry of that stretch, so the ramp's cut
+// was missing from the final path and its moves along the channel, light in the raw path,
+// went through it at full depth in a full slot: 5.8 mm by the bench's sweep of the G-code,
+// 4.2 mm at 170-180 degrees by the final path's own re-simulation (this test's sweep, at its
+// coarser pixel, read 169 degrees at most there). Now the re-simulation reads 141 at most.
+TEST(AdaptivePocket, RandomPocketWithTwoEntriesInARow) {
+  const Outcome o = expect_random_pocket_correct("random_seed2010.json", 6.0, 0.6);
+  EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
+  double slot_mm = 0.0;
+  for (const AdaptiveStep& s : o.result.steps)
+    if (s.kind != StepKind::kLink && s.engagement_deg >= 170.0) slot_mm += s.length_mm;
+  EXPECT_EQ(slot_mm, 0.0);
+}
+
 // Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
 // square island's top edge, nearly tangent to it, the region of tool centres is a sliver
 // 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
