@@ -65,7 +65,8 @@ Result<OperationOutput> run(const OperationInput& in) {
   if (!r) return r.status();
   OperationOutput out;
   Toolpath tp = r->toolpath;
-  if (p.at("arcs").get<bool>()) tp = fit_arcs(tp);
+  if (p.at("arcs").get<bool>())
+    tp = fit_pocket_arcs(tp, *pocket, in.tool->radius(), ap.wall_stock_mm);
   out.toolpaths.push_back(std::move(tp));
   const AdaptiveSummary s = summarize(*r, ap);
   out.summary["cutting_length_mm"] = s.cutting_length_mm;

@@ -100,19 +100,34 @@ Toolpath fit_arcs(const Toolpath& path, const ArcFitOptions& options) {
     for (std::size_t k = i; k < j; ++k)
       pts.push_back(moves[k].end.xy());
     const std::size_t m = pts.size() - 1;  // lines in the run
+    // The arc over lines a .. a + n - 1 of the run, as a move.
+    auto as_move = [&](std::size_t a, std::size_t n, const FitArc& f) {
+      Move arc = moves[i + a];
+      arc.kind = MoveKind::kArc;
+      arc.plane = ArcPlane::kXY;
+      arc.end = moves[i + a + n - 1].end;  // exactly the original end point
+      arc.center = {f.center.x, f.center.y, z};
+      arc.clockwise = f.clockwise;
+      return arc;
+    };
+    auto fit_ok = [&](std::size_t a, std::size_t n) -> std::optional<FitArc> {
+      auto f = fit(pts, a, a + n, options);
+      if (f && options.accept && !options.accept(pts[a], as_move(a, n, *f))) return std::nullopt;
+      return f;
+    };
     std::size_t a = 0;
     while (a < m) {
       // Greedy: the longest arc from point a. Doubling then bisection finds it with
       // O(log n) fits of O(n) each instead of trying every length (a 10^5-point circle).
       std::size_t good = 0;
       std::optional<FitArc> good_arc;
-      if (a + min_lines <= m) good_arc = fit(pts, a, a + min_lines, options);
+      if (a + min_lines <= m) good_arc = fit_ok(a, min_lines);
       if (good_arc) {
         good = min_lines;
         std::size_t bad = m - a + 1;
         std::size_t probe = std::min(2 * good, m - a);
         while (probe > good && probe < bad) {
-          if (auto arc = fit(pts, a, a + probe, options)) {
+          if (auto arc = fit_ok(a, probe)) {
             good = probe;
             good_arc = arc;
             probe = std::min(2 * probe, m - a);
@@ -122,7 +137,7 @@ Toolpath fit_arcs(const Toolpath& path, const ArcFitOptions& options) {
         }
         while (bad - good > 1) {
           const std::size_t probe2 = good + (bad - good) / 2;
-          if (auto arc = fit(pts, a, a + probe2, options)) {
+          if (auto arc = fit_ok(a, probe2)) {
             good = probe2;
             good_arc = arc;
           } else {
@@ -135,12 +150,7 @@ Toolpath fit_arcs(const Toolpath& path, const ArcFitOptions& options) {
         ++a;
         continue;
       }
-      Move arc = moves[i + a];
-      arc.kind = MoveKind::kArc;
-      arc.plane = ArcPlane::kXY;
-      arc.end = moves[i + a + good - 1].end;  // exactly the original end point
-      arc.center = {good_arc->center.x, good_arc->center.y, z};
-      arc.clockwise = good_arc->clockwise;
+      Move arc = as_move(a, good, *good_arc);
       // Annotations are peaks: keep the largest over the replaced lines (fmax skips NaN).
       for (std::size_t k = i + a; k < i + a + good; ++k) {
         arc.engagement_deg = std::fmax(arc.engagement_deg, moves[k].engagement_deg);

@@ -39,6 +39,10 @@ struct ArcFitOptions {
   double min_radius_mm = 0.05;
   double max_radius_mm = 1000.0;
   int min_points = 4;  ///< shortest run of lines to turn into an arc
+  /// Optional veto on a fitted arc (e.g. one that would cut into a wall between the points
+  /// it replaces): `start` is where the arc begins, `arc` the G2/G3 move. A vetoed arc is
+  /// tried shorter; where none is accepted the lines stay.
+  std::function<bool(Vec2 start, const Move& arc)> accept;
 };
 /// Replaces runs of linear feed moves at constant height whose points lie on a circle
 /// within the tolerance by XY arcs (G2/G3).
