@@ -267,8 +267,9 @@ TEST(AdaptivePocket, IslandNearlyClosingTheWayAlongAWall) {
 // Pocket 48 of bench/pocket_random.sh: an L with four islands, ø12 at 15 %. Before session
 // 7 it kept 211 mm^2 of reachable material (resume search, new entries); then a path
 // point stayed 4 um inside the wedge between the round island and a square island's
-// corner, which alternating projections left after 16 rounds (push_out_of_walls). Gouge
-// and residual only: 0.5 mm of near slot is left next to that wedge (docs/pocket.md).
+// corner, which alternating projections left after 16 rounds (push_out_of_walls). Its
+// near slot next to that wedge (0.5 mm, largest engagement 166 degrees) went with session
+// 17's lost-entry fix (RandomPocketWithTwoEntriesInARow): 146 degrees at most now.
 TEST(AdaptivePocket, RandomPocketWithWedgesBetweenIslands) {
   const Outcome o = expect_random_pocket_correct("random_seed48.json", 12.0, 1.8);
   EXPECT_GE(o.sweep.within_20pct, 0.82);
