@@ -342,6 +342,18 @@ TEST(AdaptivePocket, RandomPocketWithTwoEntriesInARow) {
   EXPECT_EQ(slot_mm, 0.0);
 }
 
+// Pocket 2130 of bench/pocket_random.sh (part-like, ø8 at 8 %): a ring round a rounded
+// block, its bottom channel 8.17 mm wide (0.17 mm of room), its left one 15.3 mm. In the
+// bottom channel every move on is a slot, so the no-slot rule ended each resumed session
+// after a step or two, the next resume came back 0.25 mm further, and the 200 sessions ran
+// out before the left channel was reached: 790 mm^2 left. From the third session in a row
+// that the rule ends within a tool diameter of the last, the slot may be cut.
+TEST(AdaptivePocket, RandomPocketWithAChannelBarelyWiderThanTheToolAndAnotherBeyondIt) {
+  const Outcome o = expect_random_pocket_correct("random_seed2130.json", 8.0, 0.64);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+  EXPECT_LE(o.result.material_left_mm2, 0.5);
+}
+
 // Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
 // square island's top edge, nearly tangent to it, the region of tool centres is a sliver
 // 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
