@@ -559,9 +559,8 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
         give_up_disk(c.p);
         ended_by_slot = true;
         const bool creeping = raw.eng.size() <= before_session + 1 + kCreepSteps;
-        slot_run = creeping && distance(c.p, last_slot) < 2.0 * m.radius_mm ? slot_run + 1
-                   : creeping                                               ? 1
-                                                                            : 0;
+        const bool same_place = distance(c.p, last_slot) < 2.0 * m.radius_mm;
+        slot_run = !creeping ? 0 : same_place ? slot_run + 1 : 1;
         last_slot = c.p;
         break;
       }

@@ -10,40 +10,33 @@
 
 #include "pocket/geometry.h"
 #include "swarf/pocket/adaptive.h"
+#include "toolpath/arc_geometry.h"
 
 namespace swarf {
 namespace {
 
-// A circular arc: centre, radius, start angle and signed sweep (counter-clockwise > 0), rad.
+// A fitted XY arc (toolpath/arc_geometry's start angle and signed sweep), with its ends and
+// the radius at its start.
 struct Arc {
-  Vec2 c;
-  double r = 0.0, a0 = 0.0, sweep = 0.0;
-  Vec2 p0, p1;
+  detail::ArcGeometry g;
+  Vec2 c, p0, p1;
+  double r = 0.0;
   bool covers(Vec2 q) const {  // whether the ray from c through q meets the arc
-    double t = std::atan2(q.y - c.y, q.x - c.x) - a0;
-    if (sweep < 0.0) t = -t;
+    double t = std::atan2(q.y - c.y, q.x - c.x) - g.start_angle;
+    if (g.sweep < 0.0) t = -t;
     t = std::fmod(t, 2.0 * kPi);
     if (t < 0.0) t += 2.0 * kPi;
-    return t <= std::abs(sweep);
+    return t <= std::abs(g.sweep);
   }
 };
 
 Arc arc_of(Vec2 start, const Move& m) {
   Arc a;
-  a.c = m.center.xy();
+  a.g = detail::arc_geometry(Vec3{start.x, start.y, m.end.z}, m);
+  a.c = a.g.center;
   a.p0 = start;
   a.p1 = m.end.xy();
-  a.r = distance(a.c, start);
-  a.a0 = std::atan2(start.y - a.c.y, start.x - a.c.x);
-  double s = std::atan2(a.p1.y - a.c.y, a.p1.x - a.c.x) - a.a0;
-  if (m.clockwise) {
-    while (s >= 0.0)
-      s -= 2.0 * kPi;
-  } else {
-    while (s <= 0.0)
-      s += 2.0 * kPi;
-  }
-  a.sweep = s;
+  a.r = a.g.start_radius;
   return a;
 }
 

@@ -1,5 +1,6 @@
 // Private: the geometry of G2/G3 arcs in any of the three planes, shared by the toolpath
-// (lengths, sampling), the G-code writer (linearising for grbl) and the reader.
+// (lengths, sampling), the G-code writer (linearising for grbl), the reader and the
+// pocket's wall check of fitted arcs (pocket/pocket_arcs.cpp).
 #pragma once
 
 #include <cmath>
