@@ -354,6 +354,15 @@ TEST(AdaptivePocket, RandomPocketWithAChannelBarelyWiderThanTheToolAndAnotherBey
   EXPECT_LE(o.result.material_left_mm2, 0.5);
 }
 
+// Pocket 39 of bench/pocket_random.sh (a star, ø8 at 20 %): a round island 8.1 mm from the
+// wall. The tool creeps into that short neck a session at a time, as in pocket 2130, but
+// gets through after four sessions; when the slot was allowed from the third it cut 2.0 mm
+// of it (170-178 degrees), and 0.1 mm now.
+TEST(AdaptivePocket, RandomPocketWithAShortNeckAsWideAsTheTool) {
+  const Outcome o = expect_random_pocket_correct("random_seed39.json", 8.0, 1.6);
+  EXPECT_LE(o.sweep.slot_length_mm, 0.5);
+}
+
 // Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
 // square island's top edge, nearly tangent to it, the region of tool centres is a sliver
 // 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
