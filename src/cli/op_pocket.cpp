@@ -61,6 +61,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.straight_plunge = p.at("straight_plunge").get<bool>();
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
+  ap.wall_scallop_mm = num(p, "wall_scallop");
   auto r = adaptive_pocket(*pocket, *in.tool, ap, in.ctx ? *in.ctx : default_context());
   if (!r) return r.status();
   OperationOutput out;
@@ -139,6 +140,10 @@ const OperationRegistrar kRegistrar(Operation{
                   false},
             Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
             number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),
+            number_param("wall_scallop", 0.1,
+                         "scallops higher than this (mm) where passes meet a wall at an angle "
+                         "are taken off once the path is done, square to the wall (0 = leave "
+                         "them)"),
             Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},
         }),
     run});

@@ -61,12 +61,14 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
   if (p.smoothing_iterations < 0 || p.smoothing_iterations > 6)
     return bad("smoothing_iterations must be in [0, 6]");
   if (p.simplify_tolerance_mm < 0.0) return bad("simplify_tolerance_mm must not be negative");
+  if (p.wall_scallop_mm < 0.0) return bad("wall_scallop_mm must not be negative");
   if (p.clearance_z_mm <= p.top_z_mm) return bad("clearance_z_mm must be above top_z_mm");
   return {};
 }
 
 namespace {
 
+using pocket::BitImage;
 using pocket::Entry;
 using pocket::kWallClearanceMm;
 using pocket::LinkedPath;
@@ -364,7 +366,7 @@ bool gouges_exactly(const Model& m, Vec2 c) {
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
 void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
-                AdaptiveResult& res) {
+                AdaptiveResult& res, BitImage* left_out = nullptr) {
   const Entry& e = entries.front();
   pocket::PixelStock stock = pocket::fresh_stock(m);
   CutMap& map = res.cut_map;
@@ -416,6 +418,7 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
   // Material is initialised to what the tool can reach, so whatever is left was missed.
   const std::size_t left = stock.material().count_all();
   res.material_left_mm2 = static_cast<double>(left) * m.h * m.h;
+  if (left_out != nullptr) *left_out = stock.material();
 }
 
 double link_feed(const AdaptiveParams& p) {
@@ -564,7 +567,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   ctx.report("adaptive pocket", 1.0);
   const std::vector<Entry>& order = orders[best];
   const Entry& e = order.front();
-  const LinkedPath& lp = paths[best];
+  LinkedPath& lp = paths[best];
   AdaptiveResult res;
   res.resolution_mm = m.h;
   res.rule_resolution_mm = m.rule_h;
@@ -579,7 +582,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.helix_radius_mm = e.helix_radius_mm;
   res.trochoid_groups = lp.trochoid_groups;
   res.boundary_groups = lp.boundary_groups;
-  resimulate(m, order, lp, res);
+  BitImage left;
+  resimulate(m, order, lp, res, &left);
+  if (pocket::ride_walls_over_scallops(m, left, params.wall_scallop_mm, lp))
+    resimulate(m, order, lp, res);
 
   // Output simplification: runs between kind changes and jumps, Douglas-Peucker. A chord may
   // pass up to the tolerance inside the curve it replaces, i.e. towards an island the path

@@ -124,6 +124,12 @@ inline double retract_minutes(const LinkCosts& c, double across_mm) {
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
 
+/// Appends to the path, after its end, rides along the walls' tool-centre offsets over the
+/// material `left` (the re-simulated stock) holds against a wall higher than scallop_mm
+/// (wall_rides.cpp). False when there is none (the path is unchanged).
+bool ride_walls_over_scallops(const Model& model, const BitImage& left, double scallop_mm,
+                              LinkedPath& lp);
+
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
 /// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,

@@ -164,5 +164,49 @@ TEST(AdaptivePocketStock, FittedArcsKeepOffTheWallsAndTheWallStock) {
   }
 }
 
+// Pocket 2033 of bench/pocket_random.sh (a U, ø16 at 40 %): the passes meet the long
+// bottom wall at an angle and turn back, and between two arrivals the wall kept a scallop
+// up to 0.35 mm high (the bench's sweep: 1.47 mm^2 beyond 0.2 mm from the walls, in eight
+// bumps). Once the path is done, the tool takes each scallop higher than wall_scallop_mm off,
+// square to the wall, at a cost of a few mm of cutting.
+TEST(AdaptivePocketStock, ScallopsLeftOnTheWallsAtAHighStepoverAreTakenOff) {
+  const Pocket p = testing::load_test_pocket("random_seed2033.json");
+  AdaptiveParams ap = params_3mm_deep(6.4);
+  const AdaptiveResult r = generate(p, 16.0, ap);
+  ap.wall_scallop_mm = 0.0;
+  const AdaptiveResult none = generate(p, 16.0, ap);
+  // Material from 0.2 mm off the walls counts here (the bench's allowance; the tests' usual
+  // kWallTol is 0.25). Lower scallops are below the simulation's pixels at this tool size.
+  auto swept = [&](const AdaptiveResult& a) {
+    const auto s = testing::sweep_check(p.region, 8.0, a.toolpath, a.target_engagement_deg,
+                                        kCheckerPixel, 0.2);
+    std::printf("  residual %.2f mm2, within20 %.1f %%, cutting %.0f mm, gouge %.4f mm\n",
+                s.residual_mm2, 100 * s.within_20pct, s.cutting_length_mm, s.max_gouge_mm);
+    return s;
+  };
+  const auto s = swept(r), s_none = swept(none);
+  EXPECT_GE(s_none.residual_mm2, 1.0);  // the scallops are there without the dabs
+  EXPECT_LE(s.residual_mm2, 0.15);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_EQ(s.slot_length_mm, 0.0);
+  EXPECT_LE(s.cutting_length_mm, s_none.cutting_length_mm + 20.0);
+  EXPECT_GE(s.within_20pct, s_none.within_20pct - 0.02);
+  EXPECT_LE(r.material_left_mm2, 0.1);
+}
+
+// Where the scallops stay below wall_scallop_mm (ø8 at 10 %: R - sqrt(R^2 - (ae / 2)^2) =
+// 0.02 mm where a pass meets a wall square), the path is the same with and without the
+// option: nothing is added.
+TEST(AdaptivePocketStock, LowScallopsGetNoDabs) {
+  const Pocket l = l_pocket_60x48();
+  AdaptiveParams ap = params_3mm_deep(0.8);
+  const AdaptiveResult r = generate(l, 8.0, ap);
+  ap.wall_scallop_mm = 0.0;
+  const AdaptiveResult none = generate(l, 8.0, ap);
+  ASSERT_EQ(r.toolpath.moves.size(), none.toolpath.moves.size());
+  for (std::size_t k = 0; k < r.toolpath.moves.size(); ++k)
+    EXPECT_EQ(r.toolpath.moves[k].end, none.toolpath.moves[k].end);
+}
+
 }  // namespace
 }  // namespace swarf

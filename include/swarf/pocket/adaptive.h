@@ -68,6 +68,9 @@ struct AdaptiveParams {
   /// material is left (material_left_mm2), and a pocket with no other way in is an error.
   bool straight_plunge = true;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
+  /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
+  /// at an angle get a ride along it once the path is done; 0 = none.
+  double wall_scallop_mm = 0.1;
   /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
   double simplify_tolerance_mm = 0.0;
 };
