@@ -102,6 +102,44 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
     });
     if (unreached >= quarter_disk_px) out.push_back(best);
   }
+  // Patches of free positions with no free pixel centre at all, found exactly: each outer
+  // ring of the pocket shrunk by `need` is one connected patch of tool centres (random pocket
+  // 894: a ø20 below a round island, beside a square one and above a wall, fits in a patch
+  // 0.2 x 0.3 mm with 0.05 mm of room, and the 49 mm^2 only it reaches were not material;
+  // less than a quarter disk, so the ridge search above passed it by). Such a patch is no
+  // wedge tip the path can reach from its free pixels, so any entry's worth is kept.
+  const PolygonSet centres = offset(m.region, -need);
+  const double min_px = std::max(16.0, 1.0 / (m.h * m.h));  // 1 mm^2
+  for (const Ring& ring : centres.rings) {
+    if (ring.size() < 3 || signed_area(ring) <= 0.0) continue;
+    Box2 box;
+    for (Vec2 v : ring)
+      box.add(v);
+    const Vec2 lo = m.grid.to_px(box.min), hi = m.grid.to_px(box.max);
+    bool has_free = false;
+    for (int j = std::max(0, static_cast<int>(std::floor(lo.y)));
+         j <= std::min(m.grid.height - 1, static_cast<int>(std::ceil(hi.y))) && !has_free; ++j) {
+      for (int i = std::max(0, static_cast<int>(std::floor(lo.x)));
+           i <= std::min(m.grid.width - 1, static_cast<int>(std::ceil(hi.x))) && !has_free; ++i) {
+        has_free = free_centres.get(i, j) && point_in_ring(ring, m.grid.to_world(i, j));
+      }
+    }
+    if (has_free) continue;
+    bool known = false;
+    for (Vec2 c : out)
+      known = known || point_in_ring(ring, c);
+    if (known) continue;
+    Vec2 c{0.0, 0.0};
+    for (Vec2 v : ring)
+      c = c + v;
+    c = c / static_cast<double>(ring.size());
+    if (!m.walls.inside(c) || m.walls.distance(c) < need) continue;
+    int unreached = 0;
+    for_disk(m.grid, c, m.radius_mm, [&](int pi, int pj) {
+      unreached += m.pocket.get(pi, pj) && !m.forbidden.get(pi, pj) && !reach.get(pi, pj);
+    });
+    if (unreached >= min_px) out.push_back(c);
+  }
   return out;
 }
 

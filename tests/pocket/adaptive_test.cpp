@@ -363,6 +363,17 @@ TEST(AdaptivePocket, RandomPocketWithAShortNeckAsWideAsTheTool) {
   EXPECT_LE(o.sweep.slot_length_mm, 0.5);
 }
 
+// Pocket 894 of bench/pocket_random.sh (ø20 at 30 %): below a round island, beside a
+// square one and above the wall, the tool fits in a patch of centres 0.2 x 0.3 mm with
+// 0.05 mm of room and no pixel centre in it. Only that patch reaches 49 mm^2 there, less
+// than the quarter disk the ridge search asks of a tight spot, so it was not material and
+// was left. Each patch of the exactly shrunk pocket with no free pixel is a tight spot now.
+TEST(AdaptivePocket, RandomPocketWithAToolPositionNoPixelCentreHolds) {
+  const Outcome o = expect_random_pocket_correct("random_seed894.json", 20.0, 6.0);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+  EXPECT_EQ(o.result.straight_plunges, 1);
+}
+
 // Pocket 710 of bench/pocket_random.sh (ø16 at 30 %): between the round outline and a
 // square island's top edge, nearly tangent to it, the region of tool centres is a sliver
 // 0.47 mm thick at most, ending in a 6.6 degree tip. The free pixels end 4.2 mm short of
