@@ -7,12 +7,14 @@
 // not go back for them: each is less than the smallest cut it counts as one (cut_px), so
 // the sessions that find them end as idle and are dropped. Seed 000 has no such pass. A
 // machinist finishing to size expects the walls clean, so where the re-simulated stock
-// keeps material higher than `scallop_mm` against a wall, the tool, once the path is done,
-// rides the wall's tool-centre offset over it, wall on the right for climb milling. The
-// rides cut at low engagement (a few mm each); a pocket whose scallops stay lower gets none.
+// keeps material higher than `scallop_mm` against a wall, the tool takes it off: a dab
+// square to the wall where the scallop is narrower than the tool, else a ride along the
+// wall's tool-centre offset (wall on the right for climb milling), each a visit from the
+// last pass that comes near it. A pocket whose scallops stay lower gets none.
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <vector>
 
@@ -120,7 +122,9 @@ std::vector<std::vector<std::size_t>> groups(const std::vector<std::size_t>& px,
 }
 
 struct Ride {
-  std::vector<Vec2> pts;
+  std::vector<Vec2> pts;     ///< a dab: from the cleared floor to the wall; else along it
+  bool dab = false;          ///< the way back out is the way in
+  std::vector<Vec2> pixels;  ///< centres of the material it takes
 };
 
 }  // namespace
@@ -207,22 +211,130 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
           these.clear();
           break;
         }
-        these.push_back(Ride{{start, d, start}});
+        these.push_back(Ride{{start, d}, true, {}});
       }
       if (these.empty()) {
         const double margin = std::min(m.step_mm, 0.5 * std::max(0.0, len - (s1 - s0)));
-        Ride ride{rings.stretch(r, s0 - margin, s1 + margin)};
+        Ride ride{rings.stretch(r, s0 - margin, s1 + margin), false, {}};
         // The rings run with the pocket on their left (the wall on the right), which is
         // climb milling with an M3 spindle; conventional rides the other way.
         if (m.sigma > 0) std::reverse(ride.pts.begin(), ride.pts.end());
         these.push_back(std::move(ride));
       }
-      for (Ride& ride : these)
+      for (Ride& ride : these) {
+        for (const auto& [sq, c] : at)
+          ride.pixels.push_back(c);
         rides.push_back(std::move(ride));
+      }
     }
   }
   if (rides.empty()) return false;
-  // Each ride from where the tool is, nearest first: a straight link over the cleared floor
+  // The way from a to b over the cleared floor: straight, or round the walls in its way
+  // (points pushed off them), b last; empty when neither keeps off the walls.
+  auto way_between = [&](Vec2 a, Vec2 b) {
+    std::vector<Vec2> way;
+    keep_off_walls(m.walls, reach, kWallClearanceMm, a, b, way);
+    way.push_back(b);
+    for (std::size_t k = 0; k < way.size(); ++k) {
+      if (!m.walls.inside(way[k]) ||
+          m.walls.segment_distance(k == 0 ? a : way[k - 1], way[k]) < reach - 1e-7)
+        return std::vector<Vec2>{};
+    }
+    return way;
+  };
+  // Each ride as a visit from the last move of the path that comes within a tool diameter
+  // of it, there and back from that move's point nearest to it: no later move comes near,
+  // so the material there is what the path leaves, and the tool is next to it (no link
+  // across the pocket, no retract). A ride with no way there joins a tour after the end.
+  struct Visit {
+    std::size_t segment = 0;  ///< split segment (pts[k] -> pts[k + 1]); size(): after the end
+    double t = 0.0;           ///< where along it
+    std::vector<Vec2> way;
+  };
+  std::vector<Visit> visits;
+  std::vector<Ride> tour;
+  const std::size_t segments = lp.kind.size();
+  for (Ride& ride : rides) {
+    // Segment k's tool disk comes within two pixels of the material the ride takes.
+    Box2 box;
+    for (const Vec2& p : ride.pixels)
+      box.add(p);
+    const double touch = m.radius_mm + 2.0 * m.h;
+    auto near = [&](std::size_t k) {
+      const Vec2 a = lp.jump[k] ? lp.pts[k + 1] : lp.pts[k], b = lp.pts[k + 1];
+      if (std::min(a.x, b.x) > box.max.x + touch || std::max(a.x, b.x) < box.min.x - touch ||
+          std::min(a.y, b.y) > box.max.y + touch || std::max(a.y, b.y) < box.min.y - touch)
+        return false;
+      for (const Vec2& p : ride.pixels) {
+        if (point_segment_distance(p, a, b) < touch) return true;
+      }
+      return false;
+    };
+    Visit v;
+    bool found = false;
+    for (std::size_t k = segments; k-- > 0 && !found;) {
+      if (!near(k)) continue;
+      found = true;
+      // A jump is in the air: the visit starts where it lands.
+      v.segment = lp.jump[k] ? k + 1 : k;
+      if (!lp.jump[k]) {
+        const Vec2 a = lp.pts[k], b = lp.pts[k + 1];
+        const double len2 = norm_sq(b - a);
+        v.t = len2 > 0.0 ? std::clamp(dot(ride.pts.front() - a, b - a) / len2, 0.0, 1.0) : 0.0;
+      }
+    }
+    const Vec2 from = v.segment < segments
+                          ? lp.pts[v.segment] + (lp.pts[v.segment + 1] - lp.pts[v.segment]) * v.t
+                          : lp.pts.back();
+    if (found) v.way = way_between(from, ride.pts.front());
+    for (std::size_t k = 1; k < ride.pts.size() && !v.way.empty(); ++k) {
+      std::vector<Vec2> via;
+      keep_off_walls(m.walls, reach, kWallClearanceMm, ride.pts[k - 1], ride.pts[k], via);
+      v.way.insert(v.way.end(), via.begin(), via.end());
+      v.way.push_back(ride.pts[k]);
+    }
+    if (v.way.empty()) {
+      tour.push_back(std::move(ride));
+    } else {
+      visits.push_back(std::move(v));
+    }
+  }
+  if (!visits.empty()) {
+    std::stable_sort(visits.begin(), visits.end(), [](const Visit& x, const Visit& y) {
+      return x.segment != y.segment ? x.segment < y.segment : x.t < y.t;
+    });
+    LinkedPath out = lp;
+    out.pts.assign(1, lp.pts.front());
+    out.kind.clear();
+    out.jump.clear();
+    out.entry.clear();
+    auto add = [&](Vec2 p, StepKind kind, bool jump, int entry) {
+      out.pts.push_back(p);
+      out.kind.push_back(kind);
+      out.jump.push_back(jump);
+      out.entry.push_back(entry);
+    };
+    std::size_t next = 0;
+    for (std::size_t k = 0; k <= segments; ++k) {
+      for (; next < visits.size() && visits[next].segment == k; ++next) {
+        const Visit& v = visits[next];
+        Vec2 from = out.pts.back();
+        if (k < segments && v.t > 0.0) {
+          from = lp.pts[k] + (lp.pts[k + 1] - lp.pts[k]) * v.t;
+          add(from, lp.kind[k], false, -1);
+        }
+        for (const Vec2& p : v.way)
+          add(p, StepKind::kCut, false, -1);
+        for (std::size_t q = v.way.size() - 1; q-- > 0;)
+          add(v.way[q], StepKind::kCut, false, -1);
+        add(from, StepKind::kCut, false, -1);
+      }
+      if (k < segments) add(lp.pts[k + 1], lp.kind[k], lp.jump[k], lp.entry[k]);
+    }
+    lp = std::move(out);
+  }
+  rides = std::move(tour);
+  // The rest from where the tool is, nearest first: a straight link over the cleared floor
   // where it keeps off the walls, else a retract.
   auto push = [&](Vec2 p, StepKind kind, bool jump) {
     lp.pts.push_back(p);
@@ -256,17 +368,8 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
     }
     done[next] = true;
     const std::vector<Vec2>& pts = rides[next].pts;
-    // The link: straight over the cleared floor, or round the walls in its way (points
-    // pushed off them), else a retract.
-    std::vector<Vec2> way;
-    keep_off_walls(m.walls, reach, kWallClearanceMm, at, pts.front(), way);
-    way.push_back(pts.front());
-    bool down = true;
-    for (std::size_t k = 0; k < way.size() && down; ++k) {
-      down = m.walls.inside(way[k]) &&
-             m.walls.segment_distance(k == 0 ? at : way[k - 1], way[k]) >= reach - 1e-7;
-    }
-    if (down) {
+    const std::vector<Vec2> way = way_between(at, pts.front());
+    if (!way.empty()) {
       for (const Vec2& v : way)
         push(v, StepKind::kLink, false);
     } else if (clear_below(pts.front())) {
@@ -281,6 +384,7 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
         push(v, StepKind::kBoundary, false);
       push(pts[k], StepKind::kBoundary, false);
     }
+    if (rides[next].dab) push(pts.front(), StepKind::kBoundary, false);
   }
   return true;
 }
