@@ -158,10 +158,10 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
       height = std::max(height, m.walls.distance(centre(q)) - m.wall_stock_mm);
     if (height < scallop_mm || height > m.stepover_mm) continue;
     // Where on the tool-centre offset each pixel is nearest, per ring: the stretch of the
-    // ring from which the tool reaches all of them.
-    // Only scallops: a group thicker than a stepover, or with pixels out of reach of a tool
-    // on the wall's offset, is stock left for another reason (a chamber the tool may not
-    // enter), and taking it in one ride would cut more than the target.
+    // ring from which the tool reaches all of them. Only scallops: a group thicker than a
+    // stepover, or with pixels out of reach of a tool on the wall's offset, is stock left
+    // for another reason (a chamber the tool may not enter), and taking it in one ride
+    // would cut more than the target.
     std::map<std::size_t, std::vector<std::pair<double, Vec2>>> on_ring;
     bool scallop = true;
     for (std::size_t q : g) {
@@ -242,10 +242,11 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
     }
     return way;
   };
-  // Each ride as a visit from the last move of the path that comes within a tool diameter
-  // of it, there and back from that move's point nearest to it: no later move comes near,
-  // so the material there is what the path leaves, and the tool is next to it (no link
-  // across the pocket, no retract). A ride with no way there joins a tour after the end.
+  // Each ride as a visit from the last move of the path whose tool comes within two pixels
+  // of the material it takes, there and back from that move's point nearest to it: no later
+  // move comes near, so the material there is what the path leaves, and the tool is next to
+  // it (no link across the pocket, no retract). A ride with no way there joins a tour after
+  // the path's end.
   struct Visit {
     std::size_t segment = 0;  ///< split segment (pts[k] -> pts[k + 1]); size(): after the end
     double t = 0.0;           ///< where along it
@@ -281,6 +282,10 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
         const Vec2 a = lp.pts[k], b = lp.pts[k + 1];
         const double len2 = norm_sq(b - a);
         v.t = len2 > 0.0 ? std::clamp(dot(ride.pts.front() - a, b - a) / len2, 0.0, 1.0) : 0.0;
+        if (v.t > 1.0 - 1e-9) {  // at the segment's end: from there, not from a copy of it
+          v.segment = k + 1;
+          v.t = 0.0;
+        }
       }
     }
     const Vec2 from = v.segment < segments
