@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "pocket/adaptive_internal.h"
@@ -68,7 +69,6 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
 
 namespace {
 
-using pocket::BitImage;
 using pocket::Entry;
 using pocket::kWallClearanceMm;
 using pocket::LinkedPath;
@@ -366,7 +366,7 @@ bool gouges_exactly(const Model& m, Vec2 c) {
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
 void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
-                AdaptiveResult& res, BitImage* left_out = nullptr) {
+                AdaptiveResult& res, std::optional<pocket::PixelStock>* stock_out = nullptr) {
   const Entry& e = entries.front();
   pocket::PixelStock stock = pocket::fresh_stock(m);
   CutMap& map = res.cut_map;
@@ -418,7 +418,7 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
   // Material is initialised to what the tool can reach, so whatever is left was missed.
   const std::size_t left = stock.material().count_all();
   res.material_left_mm2 = static_cast<double>(left) * m.h * m.h;
-  if (left_out != nullptr) *left_out = stock.material();
+  if (stock_out != nullptr) stock_out->emplace(std::move(stock));
 }
 
 double link_feed(const AdaptiveParams& p) {
@@ -582,9 +582,9 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.helix_radius_mm = e.helix_radius_mm;
   res.trochoid_groups = lp.trochoid_groups;
   res.boundary_groups = lp.boundary_groups;
-  BitImage left;
-  resimulate(m, order, lp, res, &left);
-  if (pocket::ride_walls_over_scallops(m, left, params.wall_scallop_mm, lp))
+  std::optional<pocket::PixelStock> after;
+  resimulate(m, order, lp, res, &after);
+  if (pocket::ride_walls_over_scallops(m, *after, params.wall_scallop_mm, lp))
     resimulate(m, order, lp, res);
 
   // Output simplification: runs between kind changes and jumps, Douglas-Peucker. A chord may

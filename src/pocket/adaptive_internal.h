@@ -124,10 +124,12 @@ inline double retract_minutes(const LinkCosts& c, double across_mm) {
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
 
-/// Appends to the path, after its end, rides along the walls' tool-centre offsets over the
-/// material `left` (the re-simulated stock) holds against a wall higher than scallop_mm
-/// (wall_rides.cpp). False when there is none (the path is unchanged).
-bool ride_walls_over_scallops(const Model& model, const BitImage& left, double scallop_mm,
+/// Takes off the scallops the path leaves on the walls (wall_rides.cpp): each group of
+/// material `after` (the re-simulated stock) holds against a wall higher than scallop_mm
+/// gets dabs square to the wall, or a ride along it, spliced into the path as a visit from
+/// the last move near it (or, with no way there, appended after the path's end). False when
+/// there is none (the path is unchanged).
+bool ride_walls_over_scallops(const Model& model, const PixelStock& after, double scallop_mm,
                               LinkedPath& lp);
 
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a

@@ -129,12 +129,13 @@ struct Ride {
 
 }  // namespace
 
-bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scallop_mm,
+bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double scallop_mm,
                               LinkedPath& lp) {
   if (scallop_mm <= 0.0 || lp.pts.empty()) return false;
   const double reach = m.radius_mm + m.wall_stock_mm;
   // The material left, as grid indices, keeping what a tool riding a wall can reach.
   std::vector<std::size_t> px;
+  const BitImage& left = after.material();
   for (int j = 0; j < left.height(); ++j) {
     for (int w = 0; w < left.words_per_row(); ++w) {
       for (std::uint64_t bits = left.word(j, w); bits != 0; bits &= bits - 1) {
@@ -229,6 +230,16 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
     }
   }
   if (rides.empty()) return false;
+  // Each ride's points with those it goes through to keep off the walls (a ride along an
+  // island's offset: the chords of its round joins).
+  for (Ride& ride : rides) {
+    std::vector<Vec2> pts{ride.pts.front()};
+    for (std::size_t k = 1; k < ride.pts.size(); ++k) {
+      keep_off_walls(m.walls, reach, kWallClearanceMm, ride.pts[k - 1], ride.pts[k], pts);
+      pts.push_back(ride.pts[k]);
+    }
+    ride.pts = std::move(pts);
+  }
   // The way from a to b over the cleared floor: straight, or round the walls in its way
   // (points pushed off them), b last; empty when neither keeps off the walls.
   auto way_between = [&](Vec2 a, Vec2 b) {
@@ -292,12 +303,7 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
                           ? lp.pts[v.segment] + (lp.pts[v.segment + 1] - lp.pts[v.segment]) * v.t
                           : lp.pts.back();
     if (found) v.way = way_between(from, ride.pts.front());
-    for (std::size_t k = 1; k < ride.pts.size() && !v.way.empty(); ++k) {
-      std::vector<Vec2> via;
-      keep_off_walls(m.walls, reach, kWallClearanceMm, ride.pts[k - 1], ride.pts[k], via);
-      v.way.insert(v.way.end(), via.begin(), via.end());
-      v.way.push_back(ride.pts[k]);
-    }
+    if (!v.way.empty()) v.way.insert(v.way.end(), ride.pts.begin() + 1, ride.pts.end());
     if (v.way.empty()) {
       tour.push_back(std::move(ride));
     } else {
@@ -347,19 +353,6 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
     lp.jump.push_back(jump);
     lp.entry.push_back(-1);
   };
-  // Whether the tool may come down at c: no material left under its disk.
-  auto clear_below = [&](Vec2 c) {
-    const Vec2 lo = m.grid.to_px(c - Vec2{m.radius_mm, m.radius_mm});
-    const Vec2 hi = m.grid.to_px(c + Vec2{m.radius_mm, m.radius_mm});
-    for (int j = std::max(0, static_cast<int>(lo.y));
-         j <= std::min(left.height() - 1, static_cast<int>(hi.y) + 1); ++j) {
-      for (int i = std::max(0, static_cast<int>(lo.x));
-           i <= std::min(left.width() - 1, static_cast<int>(hi.x) + 1); ++i) {
-        if (left.get(i, j) && distance(m.grid.to_world(i, j), c) < m.radius_mm + m.h) return false;
-      }
-    }
-    return true;
-  };
   std::vector<bool> done(rides.size(), false);
   for (std::size_t n = 0; n < rides.size(); ++n) {
     const Vec2 at = lp.pts.back();
@@ -377,18 +370,14 @@ bool ride_walls_over_scallops(const Model& m, const BitImage& left, double scall
     if (!way.empty()) {
       for (const Vec2& v : way)
         push(v, StepKind::kLink, false);
-    } else if (clear_below(pts.front())) {
+    } else if (after.material_in_disk(pts.front(), m.radius_mm + m.h, 0) == 0) {
+      // A retract comes down there: only where no material is left under the tool.
       push(pts.front(), StepKind::kLink, true);
     } else {
       continue;  // no way there but down into material
     }
-    for (std::size_t k = 1; k < pts.size(); ++k) {
-      std::vector<Vec2> via;
-      keep_off_walls(m.walls, reach, kWallClearanceMm, pts[k - 1], pts[k], via);
-      for (const Vec2& v : via)
-        push(v, StepKind::kBoundary, false);
+    for (std::size_t k = 1; k < pts.size(); ++k)
       push(pts[k], StepKind::kBoundary, false);
-    }
     if (rides[next].dab) push(pts.front(), StepKind::kBoundary, false);
   }
   return true;

@@ -69,7 +69,7 @@ struct AdaptiveParams {
   bool straight_plunge = true;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
-  /// at an angle get a ride along it once the path is done; 0 = none.
+  /// at an angle are taken off by short dabs square to it (or a ride along it); 0 = none.
   double wall_scallop_mm = 0.1;
   /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
   double simplify_tolerance_mm = 0.0;
