@@ -68,6 +68,14 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
   const double need = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
   const double quarter_disk_px = 0.25 * kPi * r_px * r_px;
   std::vector<Vec2> out;
+  // Pocket pixels in the tool's disk at c that no free pixel centre reaches.
+  auto unreached = [&](Vec2 c) {
+    int n = 0;
+    for_disk(m.grid, c, m.radius_mm, [&](int pi, int pj) {
+      n += m.pocket.get(pi, pj) && !m.forbidden.get(pi, pj) && !reach.get(pi, pj);
+    });
+    return n;
+  };
   const std::vector<int> ridge =
       medial_axis(m.clearance_sq, m.grid.width, m.grid.height, std::max(0.0, r_px - 2.0));
   if (ridge.empty()) return out;
@@ -96,11 +104,7 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
       }
     }
     if (best_d < need || !m.walls.inside(best)) continue;
-    int unreached = 0;
-    for_disk(m.grid, best, m.radius_mm, [&](int pi, int pj) {
-      unreached += m.pocket.get(pi, pj) && !m.forbidden.get(pi, pj) && !reach.get(pi, pj);
-    });
-    if (unreached >= quarter_disk_px) out.push_back(best);
+    if (unreached(best) >= quarter_disk_px) out.push_back(best);
   }
   // Patches of free positions with no free pixel centre at all, found exactly: each outer
   // ring of the pocket shrunk by `need` is one connected patch of tool centres (random pocket
@@ -134,11 +138,7 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
       c = c + v;
     c = c / static_cast<double>(ring.size());
     if (!m.walls.inside(c) || m.walls.distance(c) < need) continue;
-    int unreached = 0;
-    for_disk(m.grid, c, m.radius_mm, [&](int pi, int pj) {
-      unreached += m.pocket.get(pi, pj) && !m.forbidden.get(pi, pj) && !reach.get(pi, pj);
-    });
-    if (unreached >= min_px) out.push_back(c);
+    if (unreached(c) >= min_px) out.push_back(c);
   }
   return out;
 }
