@@ -346,8 +346,9 @@ TEST(AdaptivePocket, RandomPocketWithTwoEntriesInARow) {
 // block, its bottom channel 8.17 mm wide (0.17 mm of room), its left one 15.3 mm. In the
 // bottom channel every move on is a slot, so the no-slot rule ended each resumed session
 // after a step or two, the next resume came back 0.25 mm further, and the 200 sessions ran
-// out before the left channel was reached: 790 mm^2 left. From the third session in a row
-// that the rule ends within a tool diameter of the last, the slot may be cut.
+// out before the left channel was reached: 790 mm^2 left. From the sixth short session in a
+// row that the rule ends within a tool diameter of the last (the third until session 18),
+// the slot may be cut.
 TEST(AdaptivePocket, RandomPocketWithAChannelBarelyWiderThanTheToolAndAnotherBeyondIt) {
   const Outcome o = expect_random_pocket_correct("random_seed2130.json", 8.0, 0.64);
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
