@@ -22,7 +22,7 @@ for s in $(seq "$first" "$last"); do
     --stepover "$so" --depth 6 -o "$tmp/s.nc" >/dev/null 2>&1
   line="$s D$D so=$so $kind isl=$ni"
   add() {  # generator cpu sweep-line
-    line="$line | $1 ${2}s w20 $(field within20 "$3") res $(field residual "$3") gouge $(field gouge "$3") slot $(field slot "$3")"
+    line="$line | $1 ${2}s w20 $(field within20 "$3") res $(field residual "$3") gouge $(field gouge "$3") slot $(field slot "$3") time $(field machining "$3") lifts $(field lifts "$3")"
   }
   add swarf "$(awk '{printf "%.3f", $1 + $2}' "$tmp/t")" "$("$sweep" "$tmp/p.json" "$D" "$target" "$tmp/s.nc")"
   for fp in on off; do
@@ -41,15 +41,21 @@ for l in open(sys.argv[1]):
     parts = l.split(" | ")
     gens = {}
     for p in parts[1:]:
-        m = re.match(r"(\S+) (\S+)s w20 (\S+) res (\S+) gouge (\S+) slot (\S+)", p)
+        m = re.match(r"(\S+) (\S+)s w20 (\S+) res (\S+) gouge (\S+) slot (\S+) time (\S+) lifts (\S+)", p)
         gens[m[1]] = [float(x) for x in m.groups()[1:]]
     rows.append(gens)
 print("%d pockets: generator, CPU s in all, within +-20 %% mean / median, residual mm2 in all "
-      "(pockets over 1 mm2), pockets with a gouge over 5 um, full slot mm in all" % len(rows))
+      "(pockets over 1 mm2), pockets with a gouge over 5 um, full slot mm in all, machining "
+      "time s in all, lifts in all" % len(rows))
 for g in ("swarf", "FC-on", "FC-off"):
     v = [r[g] for r in rows]
-    print("  %-6s %6.1f  %5.1f / %5.1f %%  %8.0f (%d)  %d  %6.1f" % (
+    print("  %-6s %6.1f  %5.1f / %5.1f %%  %8.0f (%d)  %d  %6.1f  %7.0f  %4d" % (
         g, sum(x[0] for x in v), statistics.mean(x[1] for x in v),
         statistics.median(x[1] for x in v), sum(x[2] for x in v), sum(x[2] > 1 for x in v),
-        sum(x[3] > 0.005 for x in v), sum(x[4] for x in v)))
+        sum(x[3] > 0.005 for x in v), sum(x[4] for x in v), sum(x[5] for x in v),
+        sum(x[6] for x in v)))
+for g in ("FC-on", "FC-off"):
+    ratios = [r[g][5] / r["swarf"][5] for r in rows if r["swarf"][5] > 0]
+    print("  machining time of %s over Swarf's, median per pocket: %.2f (Swarf faster on %d of %d)"
+          % (g, statistics.median(ratios), sum(x > 1 for x in ratios), len(ratios)))
 PY
