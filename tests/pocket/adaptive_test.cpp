@@ -521,6 +521,41 @@ TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
   EXPECT_LE(tf.lift_offs, ts.lift_offs);
 }
 
+// Pocket 951 of bench/pocket_random.sh (ø6 at 15 %, a pentagon with a square and a round
+// island): five sessions resumed where no straight link from the last cut kept off the
+// material and the islands, and each was a retract and a plunge (the raw path has no moves
+// to follow there). A way over the cleared floor, searched among the tool centres whose
+// disks are clear and pulled taut, keeps the tool down. The sweep checks that what runs at
+// the link feed removes crumbs at most, as in the test above.
+TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
+  const Pocket p = load("random_seed951.json");
+  const AdaptiveParams ap = params_3mm_deep(0.9);
+  auto r = adaptive_pocket(p, flat_mill(6.0), ap);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  std::vector<testing::SweepSample> samples;
+  const auto s = testing::sweep_check(p.region, 3.0, r->toolpath, r->target_engagement_deg,
+                                      kCheckerPixel, kWallTol, &samples);
+  // What runs at the link feed over a millimetre or more (the ways found, and the links
+  // there were): crumbs of the sweep's finer pixels at most, as in the test above.
+  double most = 0.0;
+  std::map<std::size_t, double> link_removed;
+  for (const auto& q : samples) {
+    const Move& m = r->toolpath.moves[q.move];
+    if (q.move > 0 && m.kind == MoveKind::kFeed && m.feed_mm_min == ap.rapid_mm_min &&
+        distance(m.end.xy(), r->toolpath.moves[q.move - 1].end.xy()) >= 1.0)
+      most = std::max(most, link_removed[q.move] += q.removed_mm2);
+  }
+  const auto mt = compute_metrics(r->toolpath);
+  std::printf("  lifts %zu, at most %.3f mm^2 in one link, machining %.0f s, within20 %.1f %%\n",
+              mt.lift_offs, most, mt.machining_time_s, 100 * s.within_20pct);
+  EXPECT_EQ(mt.lift_offs, 0U);  // 5 before
+  EXPECT_LE(most, 0.25 * ap.stepover_mm * 0.3);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.residual_mm2, 0.5);
+  EXPECT_EQ(s.slot_length_mm, 0.0);
+  EXPECT_GE(s.within_20pct, 0.90);
+}
+
 // Pocket 317 of bench/pocket_random.sh: a ø20 between a square island and a round wall 20.2
 // mm apart fits along a patch of tool centres 0.22 mm wide (0.11 mm of room each side), in
 // which no pixel centre of the 0.25 mm simulation is free. The model sampled its free
