@@ -376,6 +376,16 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     }
   };
   std::vector<std::pair<std::size_t, std::size_t>> joins;  // out point index ranges to smooth
+  // Link points at depth after out point `before`, a join to smooth.
+  auto append_link = [&](const std::vector<Vec2>& pts, std::size_t before) {
+    for (Vec2 p : pts) {
+      out.pts.push_back(p);
+      out.kind.push_back(StepKind::kLink);
+      out.jump.push_back(false);
+      out.entry.push_back(-1);
+    }
+    joins.push_back({before, out.pts.size() - 1});
+  };
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const Region& r = regions[k];
     const bool between_cuts = !r.cutting && k > 0 && k + 1 < regions.size();
@@ -411,13 +421,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     }
     std::vector<Vec2> link;
     if (try_straight(m, stock, a, b, link)) {
-      for (Vec2 p : link) {
-        out.pts.push_back(p);
-        out.kind.push_back(StepKind::kLink);
-        out.jump.push_back(false);
-        out.entry.push_back(-1);
-      }
-      joins.push_back({before, out.pts.size() - 1});
+      append_link(link, before);
       continue;
     }
     // Fallback: the raw boundary-following path, pulled taut, unless a retract is faster.
@@ -446,13 +450,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
           apply_straight(m, stock, from, v, pts);
           from = v;
         }
-        for (Vec2 p : pts) {
-          out.pts.push_back(p);
-          out.kind.push_back(StepKind::kLink);
-          out.jump.push_back(false);
-          out.entry.push_back(-1);
-        }
-        joins.push_back({before, out.pts.size() - 1});
+        append_link(pts, before);
         continue;
       }
     }
@@ -479,13 +477,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
         apply_straight(m, stock, q0, raw.pts[q], pts);
         q0 = raw.pts[q];
       }
-      for (Vec2 p : pts) {
-        out.pts.push_back(p);
-        out.kind.push_back(StepKind::kLink);
-        out.jump.push_back(false);
-        out.entry.push_back(-1);
-      }
-      joins.push_back({before, out.pts.size() - 1});
+      append_link(pts, before);
     }
   }
   // Chaikin smoothing of each straight link with a few points of the cuts on either side
