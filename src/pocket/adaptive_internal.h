@@ -101,6 +101,9 @@ struct LinkedPath {
   std::vector<StepKind> kind;
   std::vector<bool> jump;
   std::vector<int> entry;  ///< per segment: a jump that enters anew at entries[i], else -1
+  /// Points of the visits into the tips of the tool centres' region (adaptive.cpp): beyond
+  /// the free pixel centres, whose disks alone make the initial material.
+  std::vector<Vec2> tip_visits;
   int trochoid_groups = 0;
   int boundary_groups = 0;
 };

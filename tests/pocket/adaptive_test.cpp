@@ -525,8 +525,7 @@ TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
 // island): five sessions resumed where no straight link from the last cut kept off the
 // material and the islands, and each was a retract and a plunge (the raw path has no moves
 // to follow there). A way over the cleared floor, searched among the tool centres whose
-// disks are clear and pulled taut, keeps the tool down. The sweep checks that what runs at
-// the link feed removes crumbs at most, as in the test above.
+// disks are clear and pulled taut, keeps the tool down.
 TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
   const Pocket p = load("random_seed951.json");
   const AdaptiveParams ap = params_3mm_deep(0.9);
@@ -535,14 +534,15 @@ TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
   std::vector<testing::SweepSample> samples;
   const auto s = testing::sweep_check(p.region, 3.0, r->toolpath, r->target_engagement_deg,
                                       kCheckerPixel, kWallTol, &samples);
-  // What runs at the link feed over a millimetre or more (the ways found, and the links
-  // there were): crumbs of the sweep's finer pixels at most, as in the test above.
+  // What runs at the link feed: crumbs of the sweep's finer pixels at most, as in the test
+  // above. Two tip visits here ended in a 0.1 mm move at the link feed that took 0.19 and
+  // 0.35 mm^2 by the sweep, the pixel model counting none of the material beyond the free
+  // pixel centres; the re-simulation counts what the visits reach now.
   double most = 0.0;
   std::map<std::size_t, double> link_removed;
   for (const auto& q : samples) {
     const Move& m = r->toolpath.moves[q.move];
-    if (q.move > 0 && m.kind == MoveKind::kFeed && m.feed_mm_min == ap.rapid_mm_min &&
-        distance(m.end.xy(), r->toolpath.moves[q.move - 1].end.xy()) >= 1.0)
+    if (m.kind == MoveKind::kFeed && m.feed_mm_min == ap.rapid_mm_min)
       most = std::max(most, link_removed[q.move] += q.removed_mm2);
   }
   const auto mt = compute_metrics(r->toolpath);
