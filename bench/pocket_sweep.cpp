@@ -4,16 +4,19 @@
 // With --wall-stock the pocket is judged shrunk by S mm (Clipper offset, round joins): the
 // tool must keep S off the walls and clear up to there.
 // Prints one line of figures (gouge, residual, cutting length, engagement within +-20 % of
-// the target by contact arc and by removal, largest engagement, full-slot length). Used by
+// the target by contact arc and by removal, largest engagement, full-slot length, machining
+// time, lifts, the most one move at the link feed removes and the most one removes per mm). Used by
 // bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "../tests/pocket/sweep_checker.cpp"
 #include "swarf/gcode/gcode.h"
-#include "swarf/polygon/polygon.h"
 #include "swarf/pocket/pocket_input.h"
+#include "swarf/polygon/polygon.h"
 #include "swarf/toolpath/metrics.h"
 
 int main(int argc, char** argv) {
@@ -43,10 +46,9 @@ int main(int argc, char** argv) {
   const double d = std::atof(argv[2]), target = std::atof(argv[3]);
   std::vector<testing::SweepSample> samples;
   std::vector<Vec2> residual;
-  const PolygonSet region =
-      wall_stock > 0.0 ? offset(pocket->region, -wall_stock) : pocket->region;
-  const auto s = testing::sweep_check(region, 0.5 * d, *program, target, 0.05, 0.2,
-                                      &samples, 0.5, &residual);
+  const PolygonSet region = wall_stock > 0.0 ? offset(pocket->region, -wall_stock) : pocket->region;
+  const auto s =
+      testing::sweep_check(region, 0.5 * d, *program, target, 0.05, 0.2, &samples, 0.5, &residual);
   auto open_csv = [](const char* path) {
     std::FILE* f = std::fopen(path, "w");
     if (f == nullptr) std::fprintf(stderr, "%s: cannot write\n", path);
@@ -72,11 +74,37 @@ int main(int argc, char** argv) {
     std::fclose(f);
   }
   const ToolpathMetrics m = compute_metrics(*program);
+  // The most one feed move at 5000 mm/min or more (Swarf's link feed, the rapid rate of the
+  // time estimates) removes: links over cleared floor should take crumbs of these finer
+  // pixels at most.
+  std::vector<double> per_move(program->moves.size(), 0.0), move_len(program->moves.size(), 0.0);
+  double link_cut = 0.0, link_len = 0.0;
+  for (const auto& q : samples) {
+    const Move& mv = program->moves[q.move];
+    if (mv.kind != MoveKind::kFeed || mv.feed_mm_min < 5000.0 - 1e-9) continue;
+    move_len[q.move] += q.length_mm;
+    if ((per_move[q.move] += q.removed_mm2) > link_cut) {
+      link_cut = per_move[q.move];
+      link_len = move_len[q.move];
+    }
+  }
+  // And the densest: removal per mm of path, as a radial depth (moves of 0.05 mm or more).
+  double densest = 0.0;
+  std::size_t dense_move = 0;
+  for (std::size_t k = 0; k < per_move.size(); ++k) {
+    if (move_len[k] >= 0.05 && per_move[k] / move_len[k] > densest) {
+      densest = per_move[k] / move_len[k];
+      dense_move = k;
+    }
+  }
+  const Vec3 dense_at = program->moves.empty() ? Vec3{} : program->moves[dense_move].end;
   std::printf(
       "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
-      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d\n",
+      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d, "
+      "linkcut %.3f mm2 over %.2f mm, densest %.3f mm (%.2f mm to %.3f, %.3f)\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
       100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
-      s.slot_length_mm, m.machining_time_s, static_cast<int>(m.lift_offs));
+      s.slot_length_mm, m.machining_time_s, static_cast<int>(m.lift_offs), link_cut, link_len,
+      densest, move_len[dense_move], dense_at.x, dense_at.y);
   return 0;
 }

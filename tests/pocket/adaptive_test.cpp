@@ -556,6 +556,81 @@ TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
   EXPECT_GE(s.within_20pct, 0.90);
 }
 
+// Pocket 955 of bench/pocket_random.sh (ø16 at 10 %, an L with four islands). A move runs at
+// the link feed when the re-simulation finds it removing at most 1/25 of a target step (at
+// 5x the feed, the chip of a target cut); that allowance is per full step, and short moves
+// of a tip visit (0.1 mm) took a pixel or two each at the link feed: 0.57 mm of radial depth
+// by the sweep against the 0.064 mm allowed. A shorter move gets its share of the allowance.
+// Checked per move by the sweep, removal per mm of path, crumbs of its pixels allowed.
+TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
+  const Pocket p = load("random_seed955.json");
+  const AdaptiveParams ap = params_3mm_deep(1.6);
+  auto r = adaptive_pocket(p, flat_mill(16.0), ap);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  std::vector<testing::SweepSample> samples;
+  const auto s = testing::sweep_check(p.region, 8.0, r->toolpath, r->target_engagement_deg,
+                                      kCheckerPixel, kWallTol, &samples);
+  std::map<std::size_t, std::pair<double, double>> per_move;  // removed mm^2, length mm
+  for (const auto& q : samples) {
+    const Move& m = r->toolpath.moves[q.move];
+    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
+    per_move[q.move].first += q.removed_mm2;
+    per_move[q.move].second += q.length_mm;
+  }
+  double densest = 0.0;
+  for (const auto& [k, v] : per_move)
+    if (v.second >= 0.05) densest = std::max(densest, v.first / v.second);
+  std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
+  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+}
+
+// Every ramp entry leaves its slot at full depth: checked on the program's own ramp moves
+// (MoveKind::kRamp, the descents and the pass at depth), by the lowest the flat tool's end
+// comes over points along the ramp's line. Pocket 996 of bench/pocket_random.sh (ø20 at 8 %)
+// ramps twice; one ramp's last descent ended at its far end and left a wedge one descent
+// thick (0.15 mm) that the path later crossed at the link feed (4.3 mm of radial depth at
+// the floor by the 2D sweep). The ramps now take an even number of descents and a pass back.
+TEST(AdaptivePocket, RampEntriesLeaveTheirSlotAtFullDepth) {
+  const Pocket p = load("random_seed996.json");
+  auto r = adaptive_pocket(p, flat_mill(20.0), params_3mm_deep(1.6));
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  const auto& mv = r->toolpath.moves;
+  const double R = 10.0;
+  int ramps = 0;
+  for (std::size_t k = 1; k < mv.size();) {
+    if (mv[k].kind != MoveKind::kRamp) {
+      ++k;
+      continue;
+    }
+    // One entry: moves k .. e - 1, starting from mv[k - 1].end (the ramp's first end).
+    std::size_t e = k;
+    while (e < mv.size() && mv[e].kind == MoveKind::kRamp)
+      ++e;
+    ++ramps;
+    const Vec2 a = mv[k - 1].end.xy(), b = mv[k].end.xy();
+    const double floor_z = mv[e - 1].end.z;
+    double worst = -1e9;  // over points of the line, the lowest the tool's end reaches there
+    for (int q = 0; q <= 100; ++q) {
+      const Vec2 pt = a + (b - a) * (q / 100.0);
+      double lowest = 1e9;
+      for (std::size_t m = k; m < e; ++m) {
+        const Vec3 from = mv[m - 1].end, to = mv[m].end;
+        for (int t = 0; t <= 200; ++t) {
+          const Vec3 c = from + (to - from) * (t / 200.0);
+          if (distance(c.xy(), pt) <= R) lowest = std::min(lowest, c.z);
+        }
+      }
+      worst = std::max(worst, lowest);
+    }
+    std::printf("  ramp %d: %.2f mm long, floor %.3f, highest left on its line %.4f\n", ramps,
+                distance(a, b), floor_z, worst);
+    EXPECT_LE(worst, floor_z + 1e-9);
+    k = e;
+  }
+  EXPECT_GE(ramps, 2);
+}
+
 // Pocket 317 of bench/pocket_random.sh: a ø20 between a square island and a round wall 20.2
 // mm apart fits along a patch of tool centres 0.22 mm wide (0.11 mm of room each side), in
 // which no pixel centre of the 0.25 mm simulation is free. The model sampled its free
