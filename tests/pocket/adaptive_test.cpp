@@ -521,31 +521,51 @@ TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
   EXPECT_LE(tf.lift_offs, ts.lift_offs);
 }
 
+// A test pocket generated and swept, with what each move at the link feed removes (mm^2)
+// and how long it is (mm) by the sweep, per move index.
+struct LinkFeedCuts {
+  AdaptiveResult result;
+  testing::SweepReport sweep;
+  std::map<std::size_t, std::pair<double, double>> per_move;
+};
+
+LinkFeedCuts link_feed_cuts(const std::string& file, double tool_d, const AdaptiveParams& ap) {
+  LinkFeedCuts out;
+  const Pocket p = load(file);
+  auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
+  EXPECT_TRUE(r.ok()) << r.status().to_string();
+  if (!r.ok()) return out;
+  out.result = std::move(r.value());
+  std::vector<testing::SweepSample> samples;
+  out.sweep =
+      testing::sweep_check(p.region, 0.5 * tool_d, out.result.toolpath,
+                           out.result.target_engagement_deg, kCheckerPixel, kWallTol, &samples);
+  for (const auto& q : samples) {
+    const Move& m = out.result.toolpath.moves[q.move];
+    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
+    out.per_move[q.move].first += q.removed_mm2;
+    out.per_move[q.move].second += q.length_mm;
+  }
+  return out;
+}
+
 // Pocket 951 of bench/pocket_random.sh (ø6 at 15 %, a pentagon with a square and a round
 // island): five sessions resumed where no straight link from the last cut kept off the
 // material and the islands, and each was a retract and a plunge (the raw path has no moves
 // to follow there). A way over the cleared floor, searched among the tool centres whose
 // disks are clear and pulled taut, keeps the tool down.
 TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
-  const Pocket p = load("random_seed951.json");
   const AdaptiveParams ap = params_3mm_deep(0.9);
-  auto r = adaptive_pocket(p, flat_mill(6.0), ap);
-  ASSERT_TRUE(r.ok()) << r.status().to_string();
-  std::vector<testing::SweepSample> samples;
-  const auto s = testing::sweep_check(p.region, 3.0, r->toolpath, r->target_engagement_deg,
-                                      kCheckerPixel, kWallTol, &samples);
+  const LinkFeedCuts c = link_feed_cuts("random_seed951.json", 6.0, ap);
+  const auto& s = c.sweep;
   // What runs at the link feed: crumbs of the sweep's finer pixels at most, as in the test
   // above. Two tip visits here ended in a 0.1 mm move at the link feed that took 0.19 and
   // 0.35 mm^2 by the sweep, the pixel model counting none of the material beyond the free
   // pixel centres; the re-simulation counts what the visits reach now.
   double most = 0.0;
-  std::map<std::size_t, double> link_removed;
-  for (const auto& q : samples) {
-    const Move& m = r->toolpath.moves[q.move];
-    if (m.kind == MoveKind::kFeed && m.feed_mm_min == ap.rapid_mm_min)
-      most = std::max(most, link_removed[q.move] += q.removed_mm2);
-  }
-  const auto mt = compute_metrics(r->toolpath);
+  for (const auto& [k, v] : c.per_move)
+    most = std::max(most, v.first);
+  const auto mt = compute_metrics(c.result.toolpath);
   std::printf("  lifts %zu, at most %.3f mm^2 in one link, machining %.0f s, within20 %.1f %%\n",
               mt.lift_offs, most, mt.machining_time_s, 100 * s.within_20pct);
   EXPECT_EQ(mt.lift_offs, 0U);  // 5 before
@@ -563,26 +583,14 @@ TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
 // by the sweep against the 0.064 mm allowed. A shorter move gets its share of the allowance.
 // Checked per move by the sweep, removal per mm of path, crumbs of its pixels allowed.
 TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
-  const Pocket p = load("random_seed955.json");
   const AdaptiveParams ap = params_3mm_deep(1.6);
-  auto r = adaptive_pocket(p, flat_mill(16.0), ap);
-  ASSERT_TRUE(r.ok()) << r.status().to_string();
-  std::vector<testing::SweepSample> samples;
-  const auto s = testing::sweep_check(p.region, 8.0, r->toolpath, r->target_engagement_deg,
-                                      kCheckerPixel, kWallTol, &samples);
-  std::map<std::size_t, std::pair<double, double>> per_move;  // removed mm^2, length mm
-  for (const auto& q : samples) {
-    const Move& m = r->toolpath.moves[q.move];
-    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
-    per_move[q.move].first += q.removed_mm2;
-    per_move[q.move].second += q.length_mm;
-  }
+  const LinkFeedCuts c = link_feed_cuts("random_seed955.json", 16.0, ap);
   double densest = 0.0;
-  for (const auto& [k, v] : per_move)
+  for (const auto& [k, v] : c.per_move)
     if (v.second >= 0.05) densest = std::max(densest, v.first / v.second);
   std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
   EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
-  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
 }
 
 // Every ramp entry leaves its slot at full depth: checked on the program's own ramp moves
