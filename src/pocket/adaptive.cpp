@@ -519,7 +519,9 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
   tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.ramp_a, p.clearance_z_mm), 0, false));
   tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(e.ramp_a, z_from), 0, false));
   const double drop = z_from - z_to;
-  int legs = std::max(2, static_cast<int>(std::ceil(drop / (len * tan_a) - 1e-9)));
+  // (A ramp is at least a pixel long; the cap only guards the division.)
+  const double legs_needed = drop / std::max(len * tan_a, 1e-6);
+  int legs = std::max(2, static_cast<int>(std::ceil(std::min(legs_needed, 1e6) - 1e-9)));
   legs += legs % 2;
   for (int k = 1; k <= legs; ++k) {
     const double z = k == legs ? z_to : z_from - drop * k / legs;
