@@ -232,10 +232,19 @@ std::vector<Vec2> cleared_way(const Model& m, const PixelStock& stock, Vec2 a, V
   const int gu = uv(goal).first, gv = uv(goal).second;
   // Centres within a tool radius less a pixel of material: the ends' own disks touch the
   // material front (a cut ends there, the next begins); the pulled moves' checks decide.
-  const BitImage near_material = dilate_by_disk(stock.material(), r_px - 1.0);
+  // Dilated over the window and a radius round it only (the whole stock's dilation at every
+  // search was 4 % of a ø6 pocket's time with 13 resumes).
+  const BitImage& mat = stock.material();
+  const int pad = static_cast<int>(std::ceil(r_px)) + 1;
+  const int wi0 = std::max(0, i0 - pad), wj0 = std::max(0, j0 - pad);
+  const int wi1 = std::min(m.grid.width - 1, i1 + pad), wj1 = std::min(m.grid.height - 1, j1 + pad);
+  BitImage window(wi1 - wi0 + 1, wj1 - wj0 + 1);
+  for (int j = wj0; j <= wj1; ++j)
+    mat.for_each_set(j, wi0, wi1, [&](int i) { window.set(i - wi0, j - wj0, true); });
+  const BitImage near_material = dilate_by_disk(window, r_px - 1.0);
   const auto passable = [&](int u, int v) {
     const int i = i0 + stride * u, j = j0 + stride * v;
-    return !near_material.get(i, j) &&
+    return !near_material.get(i - wi0, j - wj0) &&
            static_cast<double>(m.clearance_sq[m.grid.index(i, j)]) > r_px * r_px;
   };
   // Octile distance to the goal, in nodes: exact on an empty grid, so A* stays narrow.
