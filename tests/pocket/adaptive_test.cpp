@@ -295,6 +295,20 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInTwoTipsSideBySide) {
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
+// Pocket 1041 of bench/pocket_random.sh (ø20 at 40 %): the region of tool centres ends in
+// a corner between a square island's offset and a round island's (a 40-gon). The path
+// stopped 0.41 mm from the corner, and every way there along the round island's offset
+// dipped inside it by a fraction of a micron (chords across the arcs round the polygon's
+// vertices, between points pushed only to the bare reach), so the tip was never visited:
+// a crescent of 3.3 mm^2 by the bench sweep. What is left (0.19 mm^2) are three scallops
+// under a square island's edge, thinner than the ø20's 0.25 mm pixel, so the residual is
+// held to that rather than to the per-corner allowance.
+TEST(AdaptivePocket, RandomPocketWhoseTipLiesAlongAPolygonalRoundIsland) {
+  const Outcome o = run(load("random_seed1041.json"), 20.0, 8.0);
+  EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(o.sweep.residual_mm2, 0.3);
+}
+
 // Pocket 528 of bench/pocket_random.sh (ø3 at 8 %): a new entry's ramp beside a round
 // island ended 4 um into it by the sweep's exact distances (the ramp's ends came from the
 // pixel clearance, which can read half a pixel long beside a curved wall); ramps are held
