@@ -135,6 +135,12 @@ LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, co
 bool ride_walls_over_scallops(const Model& model, const PixelStock& after, double scallop_mm,
                               LinkedPath& lp);
 
+/// Puts the points of passes along a wall onto its exact offset (wall_reach.cpp).
+void snap_to_wall_offset(const Model& model, LinkedPath& lp);
+/// Adds visits to the tips of the tool centres' region the path stops short of
+/// (wall_reach.cpp); their points go to lp.tip_visits.
+void reach_into_tips(const Model& model, LinkedPath& lp);
+
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
 /// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,
