@@ -101,9 +101,10 @@ struct LinkedPath {
   std::vector<StepKind> kind;
   std::vector<bool> jump;
   std::vector<int> entry;  ///< per segment: a jump that enters anew at entries[i], else -1
-  /// Points of the visits into the tips of the tool centres' region (adaptive.cpp): beyond
-  /// the free pixel centres, whose disks alone make the initial material.
-  std::vector<Vec2> tip_visits;
+  /// Points of the visits into the tips of the tool centres' region (adaptive.cpp) and of
+  /// the scallop rides' dabs (wall_rides.cpp): beyond the free pixel centres, whose disks
+  /// alone make the initial material; the re-simulation adds what their disks cover.
+  std::vector<Vec2> beyond_free;
   int trochoid_groups = 0;
   int boundary_groups = 0;
 };
@@ -138,7 +139,7 @@ bool ride_walls_over_scallops(const Model& model, const PixelStock& after, doubl
 /// Puts the points of passes along a wall onto its exact offset (wall_reach.cpp).
 void snap_to_wall_offset(const Model& model, LinkedPath& lp);
 /// Adds visits to the tips of the tool centres' region the path stops short of
-/// (wall_reach.cpp); their points go to lp.tip_visits.
+/// (wall_reach.cpp); their points go to lp.beyond_free.
 void reach_into_tips(const Model& model, LinkedPath& lp);
 
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a

@@ -141,7 +141,7 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
 // a way there clear of the walls, gets a short visit to the tip and back. Half the radius
 // (session 8): a path that stopped 1-3 mm short of a tip left 1.5 mm^2 in the wedge
 // (random pocket 36, ø12); the visit takes it, at up to 0.2 mm more of near slot there.
-constexpr double kTipReachPx = 8.0;
+constexpr double kTipReachPx = 8.0, kTipSpanPx = 1.5;
 
 void reach_into_tips(const Model& m, LinkedPath& lp) {
   const double on = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
@@ -150,15 +150,75 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
   std::vector<Vec2> tips;
   std::vector<double> tip_near;  // per tip, how far from the path it is still visited
   const double near = std::max(kTipReachPx * m.h, 0.5 * m.radius_mm);
-  for (const Ring& r : centres.rings)
-    for (std::size_t k = 0, n = r.size(); k < n; ++k) {
-      const Vec2 a = r[(k + n - 1) % n], b = r[k], c = r[(k + 1) % n];
-      const Vec2 u = b - a, v = c - b;
-      // Interior on the left: a left turn of more than 20 degrees is a sharp convex corner
-      // (the round joins of the offset turn by a few degrees per vertex).
-      const double turn = std::atan2(cross(u, v), dot(u, v));
-      if (cross(u, v) <= 0.0 || turn <= deg_to_rad(20.0)) continue;
-      tips.push_back(b);
+  // A sharp convex corner turns left by more than 20 degrees, at one vertex (the round joins
+  // of the offset turn by a few degrees per vertex) or over a few of them within kTipSpanPx
+  // pixels: the offset of a pocket corner rounded a little wider than the tool is a tiny
+  // arc, which the free pixel centres do not follow either (part-like pocket 2312: a corner
+  // rounded 0.2 mm wider than a ø20, 12 vertices of 7.5 degrees; the path stopped 0.4 mm
+  // short and a scallop dab into it took 1.8 mm^2 at the link feed). One tip per run of
+  // such vertices, where half its turn is done.
+  const double span = kTipSpanPx * m.h;
+  for (const Ring& r : centres.rings) {
+    const std::size_t n = r.size();
+    if (n < 3) continue;
+    std::vector<double> turn(n), at(n + 1, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2 u = r[k] - r[(k + n - 1) % n], v = r[(k + 1) % n] - r[k];
+      // Interior on the left: a left turn is a convex corner.
+      turn[k] = std::atan2(cross(u, v), dot(u, v));
+      at[k + 1] = at[k] + norm(v);
+    }
+    const double perimeter = at[n];
+    // Per vertex, the turn of the vertices within `span` of it along the ring.
+    std::vector<double> near_turn(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      near_turn[k] = turn[k];
+      std::size_t ahead = 1;
+      for (; ahead < n; ++ahead) {
+        const std::size_t j = (k + ahead) % n;
+        if (std::fmod(at[j] - at[k] + perimeter, perimeter) > span) break;
+        near_turn[k] += turn[j];
+      }
+      for (std::size_t back = 1; back + ahead < n + 1; ++back) {
+        const std::size_t j = (k + n - back) % n;
+        if (std::fmod(at[k] - at[j] + perimeter, perimeter) > span) break;
+        near_turn[k] += turn[j];
+      }
+    }
+    const double sharp = deg_to_rad(20.0);
+    auto marked = [&](std::size_t k) { return turn[k] > 0.0 && near_turn[k] > sharp; };
+    // Whether vertex k's run goes on to the next vertex: both marked, at most `span` apart.
+    auto joined = [&](std::size_t k) {
+      const std::size_t j = (k + 1) % n;
+      return marked(k) && marked(j) && at[k + 1] - at[k] <= span;
+    };
+    // Runs of marked vertices, from one that does not continue its predecessor's run (none
+    // does not: the whole ring is one run).
+    std::size_t first = 0;
+    while (first < n && !(marked(first) && !joined((first + n - 1) % n)))
+      ++first;
+    const bool whole_ring = first == n;
+    if (whole_ring) first = 0;
+    for (std::size_t q = 0; q < n;) {
+      if (!marked((first + q) % n)) {
+        ++q;
+        continue;
+      }
+      std::vector<std::size_t> run;
+      double total = 0.0;
+      do {
+        run.push_back((first + q) % n);
+        total += turn[run.back()];
+        ++q;
+      } while (q < n && joined(run.back()));
+      if (total <= sharp) continue;
+      std::size_t apex = run.front();
+      for (double done = 0.0; const std::size_t k : run) {
+        done += turn[k];
+        apex = k;
+        if (done >= 0.5 * total) break;
+      }
+      tips.push_back(r[apex]);
       // The free pixels end about 1.5 pixels (the half-pixel margin and the sampling) /
       // sin(half the tip's angle) short of the exact tip. Past 8.6 degrees that is within
       // `near`; a sharper tip is visited from as far as that shortfall (session 16: random
@@ -166,10 +226,11 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
       // apart, nearly tangent: the region of centres ends in a 6.6 degree sliver, the path
       // stopped 4.2 mm short of its tip and 4.7 mm^2 were left on both sides). At most R: the
       // way there is clear of the walls, but a long one would cut as a slot.
-      const double half_tip = 0.5 * (kPi - turn);
+      const double half_tip = 0.5 * (kPi - std::min(total, kPi));
       tip_near.push_back(
           std::max(near, std::min(1.5 * m.h / std::max(std::sin(half_tip), 1e-3), m.radius_mm)));
     }
+  }
   if (tips.empty() || lp.pts.size() < 2) return;
   auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-7; };
   // The straight way from `from` to the tip t, else one through 1, 3, 7 or 15 points spread
@@ -270,7 +331,7 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
   for (std::size_t k = 0; k < lp.pts.size(); ++k) {
     out.pts.push_back(lp.pts[k]);
     for (const std::vector<Vec2>& way : visits[k]) {
-      out.tip_visits.insert(out.tip_visits.end(), way.begin(), way.end());
+      out.beyond_free.insert(out.beyond_free.end(), way.begin(), way.end());
       // There and back the same way.
       for (std::size_t q = 0; q < 2 * way.size(); ++q) {
         out.pts.push_back(q < way.size()           ? way[q]

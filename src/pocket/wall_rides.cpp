@@ -336,6 +336,7 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
         }
         for (const Vec2& p : v.way)
           add(p, StepKind::kCut, false, -1);
+        out.beyond_free.insert(out.beyond_free.end(), v.way.begin(), v.way.end());
         for (std::size_t q = v.way.size() - 1; q-- > 0;)
           add(v.way[q], StepKind::kCut, false, -1);
         add(from, StepKind::kCut, false, -1);
@@ -378,7 +379,10 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
     }
     for (std::size_t k = 1; k < pts.size(); ++k)
       push(pts[k], StepKind::kBoundary, false);
-    if (rides[next].dab) push(pts.front(), StepKind::kBoundary, false);
+    if (rides[next].dab) {
+      push(pts.front(), StepKind::kBoundary, false);
+      lp.beyond_free.insert(lp.beyond_free.end(), pts.begin(), pts.end());
+    }
   }
   return true;
 }

@@ -543,9 +543,8 @@ struct LinkFeedCuts {
   std::map<std::size_t, std::pair<double, double>> per_move;
 };
 
-LinkFeedCuts link_feed_cuts(const std::string& file, double tool_d, const AdaptiveParams& ap) {
+LinkFeedCuts link_feed_cuts(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
   LinkFeedCuts out;
-  const Pocket p = load(file);
   auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
   EXPECT_TRUE(r.ok()) << r.status().to_string();
   if (!r.ok()) return out;
@@ -561,6 +560,18 @@ LinkFeedCuts link_feed_cuts(const std::string& file, double tool_d, const Adapti
     out.per_move[q.move].second += q.length_mm;
   }
   return out;
+}
+
+LinkFeedCuts link_feed_cuts(const std::string& file, double tool_d, const AdaptiveParams& ap) {
+  return link_feed_cuts(load(file), tool_d, ap);
+}
+
+// The most a move at the link feed removes per mm of its length (moves of 0.05 mm or more).
+double densest_link_feed_cut(const LinkFeedCuts& c) {
+  double densest = 0.0;
+  for (const auto& [k, v] : c.per_move)
+    if (v.second >= 0.05) densest = std::max(densest, v.first / v.second);
+  return densest;
 }
 
 // Pocket 951 of bench/pocket_random.sh (ø6 at 15 %, a pentagon with a square and a round
@@ -599,11 +610,47 @@ TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
 TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
   const AdaptiveParams ap = params_3mm_deep(1.6);
   const LinkFeedCuts c = link_feed_cuts("random_seed955.json", 16.0, ap);
-  double densest = 0.0;
-  for (const auto& [k, v] : c.per_move)
-    if (v.second >= 0.05) densest = std::max(densest, v.first / v.second);
+  const double densest = densest_link_feed_cut(c);
   std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
   EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+}
+
+// A rectangle whose corners are rounded 0.2 mm wider than the tool's radius (as a part's
+// drawing rounds them for a cutter a size up): the tool centres' region ends in arcs of
+// 0.2 mm radius, 12 vertices of 7.5 degrees each, which no single vertex shows as a tip, and
+// the free pixel centres stop about half a millimetre short of them. The tool must reach
+// each corner (else a crescent of a few mm^2 stays), and at the cutting feed: a scallop dab
+// into such a corner took 1.8 mm^2 in a 0.7 mm move at the link feed (part-like pocket
+// 2312), the re-simulation counting none of the material beyond the free centres.
+TEST(AdaptivePocket, CornersRoundedALittleWiderThanTheToolAreReachedAtTheCuttingFeed) {
+  const double W = 120.0, H = 55.0, R = 10.0, rc = R + 0.2;
+  Ring outer;
+  const Vec2 centres[4] = {{W - rc, rc}, {W - rc, H - rc}, {rc, H - rc}, {rc, rc}};
+  for (int c = 0; c < 4; ++c)
+    for (int k = 0; k <= 12; ++k) {
+      const double a = deg_to_rad(-90.0 + 90.0 * c + 7.5 * k);
+      outer.push_back(centres[c] + Vec2{std::cos(a), std::sin(a)} * rc);
+    }
+  const Pocket p = make_pocket(outer, {}, "rounded rectangle").value();
+  const AdaptiveParams ap = params_3mm_deep(8.0);
+  const LinkFeedCuts c = link_feed_cuts(p, 2.0 * R, ap);
+  // How near the tool centre comes to each corner's apex (the offset arc's middle).
+  double farthest = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const double a = deg_to_rad(-45.0 + 90.0 * k);
+    const Vec2 apex = centres[k] + Vec2{std::cos(a), std::sin(a)} * (rc - R);
+    double nearest = 1e9;
+    for (const Move& m : c.result.toolpath.moves)
+      nearest = std::min(nearest, distance(m.end.xy(), apex));
+    farthest = std::max(farthest, nearest);
+  }
+  const double densest = densest_link_feed_cut(c);
+  std::printf("  corners reached within %.3f mm, densest link-feed move %.3f mm\n", farthest,
+              densest);
+  EXPECT_LE(farthest, 0.05);
+  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(c.sweep.residual_mm2, 0.1);
   EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
 }
 
