@@ -73,39 +73,64 @@ WallIndex::WallIndex(const PolygonSet& region, bool index) : region_(region) {
   }
 }
 
-template <class Fn>
-void WallIndex::for_cells(const Box2& b, Fn&& fn) const {
-  const double gx1 = origin_.x + nx_ * cell_, gy1 = origin_.y + ny_ * cell_;
-  if (b.max.x < origin_.x || b.max.y < origin_.y || b.min.x > gx1 || b.min.y > gy1) return;
-  const int i0 =
-      std::clamp(static_cast<int>(std::floor((b.min.x - origin_.x) / cell_)), 0, nx_ - 1);
-  const int i1 =
-      std::clamp(static_cast<int>(std::floor((b.max.x - origin_.x) / cell_)), 0, nx_ - 1);
-  const int j0 =
-      std::clamp(static_cast<int>(std::floor((b.min.y - origin_.y) / cell_)), 0, ny_ - 1);
-  const int j1 =
-      std::clamp(static_cast<int>(std::floor((b.max.y - origin_.y) / cell_)), 0, ny_ - 1);
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
-      const std::size_t c =
-          static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
-      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
-        fn(ids_[k]);
-    }
-}
-
 // The searches grow a square round the query (one cell, then doubling) until the best answer
 // found lies within it: every edge that could beat it meets the square, so it has been
 // seen, and the answer is the brute force's. The square covering the whole grid ends the
-// search too.
-template <class Visit, class Done>
-void WallIndex::grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done) const {
-  const Box2 grid{origin_, origin_ + Vec2{nx_ * cell_, ny_ * cell_}};
+// search too. Each round visits only the cells the last one did not, and skips a cell whose
+// box is farther than the best answer so far: an edge's nearest point to the query lies in
+// a cell the edge is listed in, no farther than the edge itself, so an edge that could beat
+// (or tie with) the answer is still seen (a finely drawn wall lists hundreds of edges in the
+// last square: a 10,000-edge outline spent 70 % of its time here).
+template <class Visit, class Done, class Farther>
+void WallIndex::grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& farther) const {
+  auto cell_of = [&](double v, double o, int n) {
+    return std::clamp(static_cast<int>(std::floor((v - o) / cell_)), 0, n - 1);
+  };
+  const double gx1 = origin_.x + nx_ * cell_, gy1 = origin_.y + ny_ * cell_;
+  int pi0 = 0, pi1 = -1, pj0 = 0, pj1 = -1;  // the cells already visited (none yet)
+  struct RingCell {
+    double gap_sq;
+    Vec2 c0;
+    std::size_t cell;
+  };
+  thread_local std::vector<RingCell> ring;
   for (double r = cell_;; r *= 2.0) {
     const Box2 b{lo - Vec2{r, r}, hi + Vec2{r, r}};
-    for_cells(b, visit);
-    if (done(r) || (b.min.x <= grid.min.x && b.min.y <= grid.min.y && b.max.x >= grid.max.x &&
-                    b.max.y >= grid.max.y))
+    const bool meets =
+        !(b.max.x < origin_.x || b.max.y < origin_.y || b.min.x > gx1 || b.min.y > gy1);
+    if (meets) {
+      const int i0 = cell_of(b.min.x, origin_.x, nx_), i1 = cell_of(b.max.x, origin_.x, nx_);
+      const int j0 = cell_of(b.min.y, origin_.y, ny_), j1 = cell_of(b.max.y, origin_.y, ny_);
+      // The new cells holding edges, nearest first, so that the best answer shrinks early
+      // and prunes the rest.
+      ring.clear();
+      for (int j = j0; j <= j1; ++j) {
+        for (int i = i0; i <= i1; ++i) {
+          if (i >= pi0 && i <= pi1 && j >= pj0 && j <= pj1) {
+            i = pi1;  // skip the visited block of this row
+            continue;
+          }
+          const std::size_t c = static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
+                                static_cast<std::size_t>(i);
+          if (start_[c] == start_[c + 1]) continue;
+          const Vec2 c0{origin_.x + i * cell_, origin_.y + j * cell_};
+          ring.push_back({box_gap_sq(lo, hi, c0, c0 + Vec2{cell_, cell_}), c0, c});
+        }
+      }
+      std::sort(ring.begin(), ring.end(),
+                [](const RingCell& x, const RingCell& y) { return x.gap_sq < y.gap_sq; });
+      for (const RingCell& rc : ring) {
+        if (farther(rc.c0, rc.c0 + Vec2{cell_, cell_})) continue;
+        for (std::uint32_t k = start_[rc.cell]; k < start_[rc.cell + 1]; ++k)
+          visit(ids_[k]);
+      }
+      pi0 = i0;
+      pi1 = i1;
+      pj0 = j0;
+      pj1 = j1;
+    }
+    if (done(r) ||
+        (b.min.x <= origin_.x && b.min.y <= origin_.y && b.max.x >= gx1 && b.max.y >= gy1))
       return;
   }
 }
@@ -120,7 +145,8 @@ double WallIndex::distance(Vec2 p) const {
         if (box_gap_sq(p, p, e.a, e.b) >= d2) return;
         d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, e.a, e.b)));
       },
-      [&](double r) { return d2 <= r * r; });
+      [&](double r) { return d2 <= r * r; },
+      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(p, p, c0, c1) >= d2; });
   return std::sqrt(d2);
 }
 
@@ -143,7 +169,8 @@ Vec2 WallIndex::nearest(Vec2 p) const {
           found = true;
         }
       },
-      [&](double r) { return best <= r * r; });
+      [&](double r) { return best <= r * r; },
+      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(p, p, c0, c1) > best; });
   if (!found) return p;
   return nearest_on_segment(p, edges_[best_k].a, edges_[best_k].b);
 }
@@ -159,7 +186,8 @@ double WallIndex::segment_distance(Vec2 a, Vec2 b) const {
         if (box_gap_sq(lo, hi, c, e) >= d * d) return;  // also once d is 0
         d = std::min(d, segment_segment_distance(a, b, c, e));
       },
-      [&](double r) { return d <= r; });
+      [&](double r) { return d <= r; },
+      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(lo, hi, c0, c1) >= d * d; });
   return d;
 }
 

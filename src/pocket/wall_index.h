@@ -42,13 +42,11 @@ class WallIndex {
   struct Edge {
     Vec2 a, b;  ///< ring[i], ring[i + 1]: the order of the brute-force loops
   };
-  // Cells [i0, i1] x [j0, j1] overlapping box b (clamped to the grid), for fn(cell index).
-  template <class Fn>
-  void for_cells(const Box2& b, Fn&& fn) const;
   // visit(edge) for the edges of the cells of [lo - r, hi + r], r one cell and doubling,
-  // until done(r) or the square covers the grid.
-  template <class Visit, class Done>
-  void grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done) const;
+  // until done(r) or the square covers the grid; each cell once, and none whose box is
+  // farther(cell_lo, cell_hi) than the best answer so far.
+  template <class Visit, class Done, class Farther>
+  void grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& farther) const;
 
   PolygonSet region_;
   std::vector<Edge> edges_;             ///< every ring's edges, rings in order
