@@ -1,5 +1,8 @@
 // `swarf pocket`: the adaptive pocket of seed 000 (swarf/pocket/adaptive.h).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "cli/operation.h"
 #include "cli/pocket_params.h"
@@ -92,6 +95,29 @@ Result<OperationOutput> run(const OperationInput& in) {
     out.notes.push_back(std::to_string(r->straight_plunges) +
                         " straight plunge(s) where no helix or ramp fits: the end mill must be "
                         "centre-cutting (--no-straight-plunge leaves that material instead)");
+  }
+  // The adaptive pocket plans a flat end at the floor. A ball or bull-nose end mill cuts the
+  // same path without a gouge (its disk at the walls is the full diameter), but leaves a
+  // fillet of its corner radius where the floor meets the walls and, where a pass steps over
+  // more than its flat, cusps on the floor: said, with their height, rather than refused.
+  if (in.tool->kind != ToolKind::kFlat) {
+    const double rc = in.tool->corner_radius_mm;
+    const double flat = in.tool->diameter_mm - 2.0 * rc;
+    const double ae = stepover_for_angle_mm(r->target_engagement_deg, in.tool->radius());
+    const double over = std::min(std::max(0.0, 0.5 * (ae - flat)), rc);
+    const double cusp = rc - std::sqrt(rc * rc - over * over);
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%s end mill: the path is planned for a flat end; the floor keeps a %.3g mm "
+                  "fillet at the walls",
+                  std::string(tool_kind_name(in.tool->kind)).c_str(), rc);
+    std::string note = text;
+    if (cusp > 0.0) {
+      std::snprintf(text, sizeof text, " and cusps up to %.3g mm high between passes", cusp);
+      note += text;
+    }
+    out.notes.push_back(note);
+    out.summary["floor_cusp_mm"] = cusp;
   }
   if (r->candidate_time_s.size() > 1) {
     out.summary["plunge_candidate_time_s"] = r->candidate_time_s;

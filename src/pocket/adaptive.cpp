@@ -369,8 +369,14 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   Toolpath& tp = res.toolpath;
   tp.name = "adaptive pocket";
   tp.tool_number = tool.number;
-  char desc[64];
-  std::snprintf(desc, sizeof desc, "%g mm flat end mill", tool.diameter_mm);
+  char desc[96];
+  if (tool.kind == ToolKind::kBull) {
+    std::snprintf(desc, sizeof desc, "%g mm bull-nose end mill R%g", tool.diameter_mm,
+                  tool.corner_radius_mm);
+  } else {
+    std::snprintf(desc, sizeof desc, "%g mm %s end mill", tool.diameter_mm,
+                  tool.kind == ToolKind::kBall ? "ball" : "flat");
+  }
   tp.tool_description = desc;
   tp.tool_diameter_mm = tool.diameter_mm;
   tp.clearance_z_mm = params.clearance_z_mm;

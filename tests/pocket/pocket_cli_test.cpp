@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -95,6 +96,41 @@ TEST(PocketCli, LinkFeedSetsTheFeedOfTheLinks) {
   EXPECT_EQ(bad.status, 2) << bad.out;
   EXPECT_NE(bad.out.find("link_feed"), std::string::npos) << bad.out;
   EXPECT_FALSE(std::filesystem::exists(dir.file("bad.nc")));
+}
+
+// A ball or bull-nose end mill cuts the flat-end path without a gouge but not a flat floor:
+// the run says so, with the cusp height between passes (a ø10 ball at 1 mm stepover: 5 -
+// sqrt(25 - 0.25) = 0.0251 mm), which a flat end mill's run does not mention.
+TEST(PocketCli, RoundEndedMillsAreToldWhatTheyLeaveOnTheFloor) {
+  testing::TempDir dir;
+  const std::string common = "pocket " + std::string(SWARF_TEST_DATA_DIR) +
+                             "/pocket/kirimoto_pocket.json --stepover 1 --depth 3 ";
+  const auto ball = testing::run_swarf(common + "--tool ball:10 -o " + dir.file("b.nc") +
+                                       " --report " + dir.file("rep"));
+  ASSERT_EQ(ball.status, 0) << ball.out;
+  EXPECT_NE(ball.out.find("fillet"), std::string::npos) << ball.out;
+  const auto j = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
+  EXPECT_NEAR(j.at("floor_cusp_mm").get<double>(), 5.0 - std::sqrt(25.0 - 0.25), 1e-9);
+  const auto flat = testing::run_swarf(common + "--tool flat:10 -o " + dir.file("f.nc"));
+  ASSERT_EQ(flat.status, 0) << flat.out;
+  EXPECT_EQ(flat.out.find("fillet"), std::string::npos) << flat.out;
+  // The program's tool-change comment names the tool loaded (it said "flat" for any).
+  EXPECT_NE(testing::read_file(dir.file("b.nc")).find("ball end mill"), std::string::npos);
+  // The same path: the tool's end shape changes nothing in the plan (comments aside, which
+  // name the tool).
+  auto moves = [](const std::string& gcode) {
+    std::string out;
+    std::size_t at = 0;
+    while (at < gcode.size()) {
+      std::size_t end = gcode.find('\n', at);
+      if (end == std::string::npos) end = gcode.size();
+      if (gcode[at] != '(') out += gcode.substr(at, end - at + 1);
+      at = end + 1;
+    }
+    return out;
+  };
+  EXPECT_EQ(moves(testing::read_file(dir.file("b.nc"))),
+            moves(testing::read_file(dir.file("f.nc"))));
 }
 
 TEST(PocketCli, OpenOutlineIsABadInputExitNamingTheFile) {
