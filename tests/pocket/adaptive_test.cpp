@@ -654,6 +654,51 @@ TEST(AdaptivePocket, CornersRoundedALittleWiderThanTheToolAreReachedAtTheCutting
   EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
 }
 
+// On layers below the first, an entry's hole or slot is already cut down to the previous
+// layer's floor (the path is the same on every layer): the tool goes straight down through
+// it and the helix or ramp starts at that floor, not 1 mm above it in the air (3.8 s a
+// layer at the defaults). Checked on the program's own moves: no helix or ramp move starts
+// above the floor of the layer before its own, on the L (helix) and on a channel as wide as
+// the tool plus 0.8 mm (ramp); the first layer's still start 1 mm above the stock.
+TEST(AdaptivePocket, LowerLayersEnterThroughTheHoleAlreadyCut) {
+  Pocket channel =
+      make_pocket({{0, 0}, {40, 0}, {40, 8.8}, {0, 8.8}}, {}, "channel 8.8 x 40").value();
+  const Pocket l = scaled(load("l_pocket_islands.json"), 0.6);
+  for (const auto& [p, tool_d] : {std::pair{l, 8.0}, std::pair{channel, 8.0}}) {
+    AdaptiveParams ap;
+    ap.stepover_mm = 1.6;
+    ap.depth_mm = 6.0;
+    ap.stepdown_mm = 2.0;
+    auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
+    ASSERT_TRUE(r.ok()) << r.status().to_string();
+    const auto& mv = r->toolpath.moves;
+    int entries = 0, first_layer = 0;
+    for (std::size_t k = 1; k < mv.size(); ++k) {
+      if (mv[k].kind != MoveKind::kHelix && mv[k].kind != MoveKind::kRamp) continue;
+      if (mv[k - 1].kind == MoveKind::kHelix || mv[k - 1].kind == MoveKind::kRamp) continue;
+      ++entries;
+      const double start_z = mv[k - 1].end.z;
+      // The layer this entry descends to, and the floor of the one before it.
+      double z_to = mv[k].end.z;
+      for (std::size_t q = k;
+           q < mv.size() && (mv[q].kind == MoveKind::kHelix || mv[q].kind == MoveKind::kRamp); ++q)
+        z_to = mv[q].end.z;
+      const double floor_before = z_to + 2.0;  // stepdown 2, from the top at 0
+      if (floor_before >= -1e-9) {
+        ++first_layer;
+        EXPECT_NEAR(start_z, 1.0, 1e-9) << p.source;
+      } else {
+        EXPECT_LE(start_z, floor_before + 1e-9) << p.source << " entry to " << z_to;
+      }
+    }
+    EXPECT_GE(entries, 3) << p.source;  // one a layer at least
+    EXPECT_GE(first_layer, 1) << p.source;
+    const auto s = testing::sweep_check(p.region, 0.5 * tool_d, r->toolpath,
+                                        r->target_engagement_deg, kCheckerPixel, kWallTol);
+    EXPECT_LE(s.max_gouge_mm, 1e-6);
+  }
+}
+
 // Every ramp entry leaves its slot at full depth: checked on the program's own ramp moves
 // (MoveKind::kRamp, the descents and the pass at depth), by the lowest the flat tool's end
 // comes over points along the ramp's line. Pocket 996 of bench/pocket_random.sh (ø20 at 8 %)
