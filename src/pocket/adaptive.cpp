@@ -216,9 +216,10 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
                  double z_clear, double z_to) {
   const double tan_a = std::tan(deg_to_rad(p.ramp_angle_deg));
   auto down_through_the_cut = [&](Vec2 at) {
-    if (z_clear < z_from - 1e-9)
+    if (z_clear < z_from - 1e-9) {
       tp.moves.push_back(
           make_move(MoveKind::kPlunge, to_vec3(at, z_clear), p.plunge_feed_mm_min, false));
+    }
     z_from = std::min(z_from, z_clear);
   };
   if (e.plunge) {

@@ -624,25 +624,28 @@ TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
 // into such a corner took 1.8 mm^2 in a 0.7 mm move at the link feed (part-like pocket
 // 2312), the re-simulation counting none of the material beyond the free centres.
 TEST(AdaptivePocket, CornersRoundedALittleWiderThanTheToolAreReachedAtTheCuttingFeed) {
-  const double W = 120.0, H = 55.0, R = 10.0, rc = R + 0.2;
+  const double width = 120.0, height = 55.0, radius = 10.0, rc = radius + 0.2;
   Ring outer;
-  const Vec2 centres[4] = {{W - rc, rc}, {W - rc, H - rc}, {rc, H - rc}, {rc, rc}};
-  for (int c = 0; c < 4; ++c)
+  const Vec2 centres[4] = {
+      {width - rc, rc}, {width - rc, height - rc}, {rc, height - rc}, {rc, rc}};
+  for (int c = 0; c < 4; ++c) {
     for (int k = 0; k <= 12; ++k) {
       const double a = deg_to_rad(-90.0 + 90.0 * c + 7.5 * k);
       outer.push_back(centres[c] + Vec2{std::cos(a), std::sin(a)} * rc);
     }
+  }
   const Pocket p = make_pocket(outer, {}, "rounded rectangle").value();
   const AdaptiveParams ap = params_3mm_deep(8.0);
-  const LinkFeedCuts c = link_feed_cuts(p, 2.0 * R, ap);
+  const LinkFeedCuts c = link_feed_cuts(p, 2.0 * radius, ap);
   // How near the tool centre comes to each corner's apex (the offset arc's middle).
   double farthest = 0.0;
   for (int k = 0; k < 4; ++k) {
     const double a = deg_to_rad(-45.0 + 90.0 * k);
-    const Vec2 apex = centres[k] + Vec2{std::cos(a), std::sin(a)} * (rc - R);
+    const Vec2 apex = centres[k] + Vec2{std::cos(a), std::sin(a)} * (rc - radius);
     double nearest = 1e9;
-    for (const Move& m : c.result.toolpath.moves)
+    for (const Move& m : c.result.toolpath.moves) {
       nearest = std::min(nearest, distance(m.end.xy(), apex));
+    }
     farthest = std::max(farthest, nearest);
   }
   const double densest = densest_link_feed_cut(c);
