@@ -601,6 +601,27 @@ TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
   EXPECT_GE(s.within_20pct, 0.90);
 }
 
+// Pocket 977 of bench/pocket_random.sh (ø3 at 8 %, a polygon with two islands): the search
+// for a way over the cleared floor ran on tool centres a sixth of the radius apart, and
+// three resumes found none where the clear centres between the islands formed strips
+// narrower than that; each lifted for a hop of a few millimetres. Where the coarse search
+// finds nothing a finer one (a third of the stride) runs.
+TEST(AdaptivePocket, ResumesFindWaysThroughPassagesNarrowerThanTheSearchStride) {
+  const AdaptiveParams ap = params_3mm_deep(0.24);
+  const LinkFeedCuts c = link_feed_cuts("random_seed977.json", 3.0, ap);
+  const auto mt = compute_metrics(c.result.toolpath);
+  std::printf("  lifts %zu, machining %.0f s\n", mt.lift_offs, mt.machining_time_s);
+  EXPECT_LE(mt.lift_offs, 2U);  // 5 before
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(c.sweep.residual_mm2, 0.5);
+  // The new links go over cleared floor: the most a link-feed move removes is a few of
+  // the checker's pixels.
+  double most = 0.0;
+  for (const auto& [k, v] : c.per_move)
+    most = std::max(most, v.first);
+  EXPECT_LE(most, 4.0 * kCheckerPixel * kCheckerPixel);
+}
+
 // Pocket 955 of bench/pocket_random.sh (ø16 at 10 %, an L with four islands). A move runs at
 // the link feed when the re-simulation finds it removing at most 1/25 of a target step (at
 // 5x the feed, the chip of a target cut); that allowance is per full step, and short moves
