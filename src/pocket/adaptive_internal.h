@@ -101,7 +101,7 @@ struct LinkedPath {
   std::vector<StepKind> kind;
   std::vector<bool> jump;
   std::vector<int> entry;  ///< per segment: a jump that enters anew at entries[i], else -1
-  /// Points of the visits into the tips of the tool centres' region (adaptive.cpp) and of
+  /// Points of the visits into the tips of the tool centres' region (wall_reach.cpp) and of
   /// the scallop rides' dabs (wall_rides.cpp): beyond the free pixel centres, whose disks
   /// alone make the initial material; the re-simulation adds what their disks cover.
   std::vector<Vec2> beyond_free;
