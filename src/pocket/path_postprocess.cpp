@@ -311,7 +311,8 @@ std::vector<Vec2> cleared_way(const Model& m, const PixelStock& stock, Vec2 a, V
   };
   // A sixth of the radius apart, and where that finds no way, a third of that: between two
   // islands the clear centres may be a strip narrower than the coarse stride, and the tool
-  // lifted for a hop of a few millimetres (random pocket 964, ø16: five of its seven lifts).
+  // lifted for a hop of a few millimetres (random pocket 977, ø3: three of its five lifts;
+  // seeds 950-998: 78 -> 62).
   const int coarse = std::max(1, static_cast<int>(r_px / 6.0));
   std::vector<Vec2> way = search(coarse);
   if (way.empty() && coarse >= 3) way = search(coarse / 3);
