@@ -30,6 +30,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   auto r = contour_parallel_pocket(*pocket, *in.tool, cp, in.ctx ? *in.ctx : default_context());
   if (!r) return r.status();
   OperationOutput out;
+  out.notes = pocket->notes;
   out.summary["rings_per_layer"] = r->rings;
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.toolpaths.push_back(std::move(r->toolpath));

@@ -68,6 +68,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   auto r = adaptive_pocket(*pocket, *in.tool, ap, in.ctx ? *in.ctx : default_context());
   if (!r) return r.status();
   OperationOutput out;
+  out.notes = pocket->notes;
   Toolpath tp = r->toolpath;
   if (p.at("arcs").get<bool>())
     tp = fit_pocket_arcs(tp, *pocket, in.tool->radius(), ap.wall_stock_mm);

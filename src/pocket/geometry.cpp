@@ -27,10 +27,10 @@ bool point_in_ring(const Ring& ring, Vec2 p) {
 }
 
 bool point_in_region(const PolygonSet& region, Vec2 p) {
-  if (region.rings.empty() || !point_in_ring(region.rings[0], p)) return false;
-  for (std::size_t i = 1; i < region.rings.size(); ++i)
-    if (point_in_ring(region.rings[i], p)) return false;
-  return true;
+  bool inside = false;
+  for (const Ring& r : region.rings)
+    inside = inside != point_in_ring(r, p);
+  return inside;
 }
 
 Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
@@ -143,13 +143,19 @@ struct Edge {
 
 }  // namespace
 
-std::optional<Crossing> find_crossing(const std::vector<Ring>& rings) {
+namespace {
+
+// Calls visit(crossing) for each pair of non-adjacent edges that touch, in the sweep's
+// order (edges by xmin, then ring and index), until it returns true.
+template <typename Visit>
+void for_each_crossing(const std::vector<Ring>& rings, Visit&& visit) {
   std::vector<Edge> edges;
-  for (std::size_t r = 0; r < rings.size(); ++r)
+  for (std::size_t r = 0; r < rings.size(); ++r) {
     for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
       const Vec2 a = rings[r][i], b = rings[r][(i + 1) % n];
       edges.push_back({std::min(a.x, b.x), std::max(a.x, b.x), r, i});
     }
+  }
   std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
     return a.xmin != b.xmin ? a.xmin < b.xmin
                             : (a.ring != b.ring ? a.ring < b.ring : a.index < b.index);
@@ -175,11 +181,37 @@ std::optional<Crossing> find_crossing(const std::vector<Ring>& rings) {
           std::swap(x.ring_a, x.ring_b);
           std::swap(x.edge_a, x.edge_b);
         }
-        return x;
+        if (visit(x)) return;
       }
     }
   }
-  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Crossing> find_crossing(const std::vector<Ring>& rings) {
+  std::optional<Crossing> found;
+  for_each_crossing(rings, [&](const Crossing& x) {
+    found = x;
+    return true;
+  });
+  return found;
+}
+
+RingContacts find_ring_contacts(const std::vector<Ring>& rings) {
+  RingContacts out;
+  for_each_crossing(rings, [&](const Crossing& x) {
+    if (x.ring_a == x.ring_b) {
+      out.self_crossing = x;
+      return true;
+    }
+    const std::pair<std::size_t, std::size_t> pair{x.ring_a, x.ring_b};
+    if (std::find(out.pairs.begin(), out.pairs.end(), pair) == out.pairs.end())
+      out.pairs.push_back(pair);
+    return false;
+  });
+  std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
 }
 
 Ring cleaned_ring(const Ring& ring, double eps) {

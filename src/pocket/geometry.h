@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "swarf/core/vec.h"
@@ -15,7 +16,8 @@ namespace swarf::pocket {
 double ring_area(const Ring& ring);
 /// Even-odd point-in-ring test (boundary points may go either way).
 bool point_in_ring(const Ring& ring, Vec2 p);
-/// Inside the outer ring and outside every island (rings[0] outer, rings[1..] islands).
+/// Even-odd over all rings: for a normalized region whose rings do not cross (outer rings,
+/// each with its islands), inside an outer ring and outside all of its islands.
 bool point_in_region(const PolygonSet& region, Vec2 p);
 /// The point of segment ab nearest to p (a for a zero-length segment).
 Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b);
@@ -43,6 +45,14 @@ struct Crossing {
 /// First crossing between non-adjacent edges of the rings (touching counts), or none.
 /// Sweep over x-sorted edge boxes: O(n log n + k).
 std::optional<Crossing> find_crossing(const std::vector<Ring>& rings);
+/// What touches what among the rings: the first self-crossing in the sweep's order (the
+/// search stops there), else every pair of distinct rings with touching edges (ring_a <
+/// ring_b, sorted).
+struct RingContacts {
+  std::optional<Crossing> self_crossing;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+};
+RingContacts find_ring_contacts(const std::vector<Ring>& rings);
 
 /// Removes consecutive duplicate points (closer than eps) and a closing duplicate.
 Ring cleaned_ring(const Ring& ring, double eps);

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <span>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +33,53 @@ std::string ring_name(std::size_t i) {
 // stays fast); real pockets have a few thousand points.
 constexpr std::size_t kMaxPoints = 200000;
 
+// Islands that overlap or touch each other or the outer boundary (a boss drawn across the
+// wall, two bosses drawn as overlapping circles): the pocket is the outer ring's inside
+// minus the union of the islands, by Clipper on its 1e-5 mm grid. Each part the islands
+// cut the pocket into is cleared (the adaptive pocket enters each where no cleared way
+// leads); the largest part's outer ring comes first. What was merged is said in the notes.
+Result<Pocket> merged_pocket(const std::vector<Ring>& rings,
+                             const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                             const std::string& src) {
+  std::vector<PolygonSet> islands;
+  for (std::size_t i = 1; i < rings.size(); ++i)
+    islands.push_back(normalized(PolygonSet{{rings[i]}}));
+  const PolygonSet region =
+      subtract(normalized(PolygonSet{{rings[0]}}), unite(std::span<const PolygonSet>(islands)));
+  std::vector<PolygonSet> parts = connected_parts(region);
+  if (parts.empty()) return bad_input(src + ": the islands cover the whole pocket");
+  std::stable_sort(parts.begin(), parts.end(),
+                   [](const PolygonSet& a, const PolygonSet& b) { return area(a) > area(b); });
+  Pocket p;
+  p.source = src;
+  for (PolygonSet& part : parts) {
+    for (Ring& r : part.rings)
+      p.region.rings.push_back(std::move(r));
+  }
+  std::string walls, overlaps;
+  int n_walls = 0;
+  for (const auto& [a, b] : pairs) {
+    std::string& list = a == 0 ? walls : overlaps;
+    n_walls += a == 0 ? 1 : 0;
+    list += (list.empty() ? "" : ", ") +
+            (a == 0 ? std::to_string(b) : std::to_string(a) + " and " + std::to_string(b));
+  }
+  if (n_walls == 1) {
+    p.notes.push_back(src + ": island " + walls +
+                      " crosses or touches the outer boundary: the wall follows it");
+  } else if (n_walls > 1) {
+    p.notes.push_back(src + ": islands " + walls +
+                      " cross or touch the outer boundary: the wall follows them");
+  }
+  if (!overlaps.empty())
+    p.notes.push_back(src + ": islands " + overlaps + " overlap or touch: cut round as one");
+  if (parts.size() > 1) {
+    p.notes.push_back(src + ": the islands divide the pocket into " + std::to_string(parts.size()) +
+                      " separate areas, each entered on its own");
+  }
+  return p;
+}
+
 }  // namespace
 
 Result<Pocket> make_pocket(Ring outer, std::vector<Ring> islands, std::string_view source) {
@@ -53,27 +102,32 @@ Result<Pocket> make_pocket(Ring outer, std::vector<Ring> islands, std::string_vi
   if (total > kMaxPoints)
     return bad_input(src + ": " + std::to_string(total) + " points, more than the " +
                      std::to_string(kMaxPoints) + " accepted");
-  if (const auto x = pocket::find_crossing(rings)) {
-    if (x->ring_a == x->ring_b)
-      return bad_input(src + ": " + ring_name(x->ring_a) + " intersects itself: edge " +
-                       std::to_string(x->edge_a) + " meets edge " + std::to_string(x->edge_b) +
-                       " at " + fmt(x->point));
-    return bad_input(src + ": " + ring_name(x->ring_a) + " (edge " + std::to_string(x->edge_a) +
-                     ") crosses " + ring_name(x->ring_b) + " (edge " + std::to_string(x->edge_b) +
-                     ") at " + fmt(x->point));
+  const pocket::RingContacts contacts = pocket::find_ring_contacts(rings);
+  if (const auto& x = contacts.self_crossing) {
+    return bad_input(src + ": " + ring_name(x->ring_a) + " intersects itself: edge " +
+                     std::to_string(x->edge_a) + " meets edge " + std::to_string(x->edge_b) +
+                     " at " + fmt(x->point));
   }
-  for (std::size_t i = 0; i < rings.size(); ++i)
+  for (std::size_t i = 0; i < rings.size(); ++i) {
     if (std::abs(pocket::ring_area(rings[i])) < 1e-9)
       return bad_input(src + ": " + ring_name(i) + ": encloses no area");
-  // No crossings: one vertex tells on which side of another ring a whole ring lies.
+  }
+  const auto touch = [&](std::size_t a, std::size_t b) {
+    return std::binary_search(contacts.pairs.begin(), contacts.pairs.end(),
+                              std::pair{std::min(a, b), std::max(a, b)});
+  };
+  // Rings that do not touch: one vertex tells on which side of the other a whole ring lies.
   for (std::size_t i = 1; i < rings.size(); ++i) {
-    if (!pocket::point_in_ring(rings[0], rings[i][0]))
+    if (!touch(0, i) && !pocket::point_in_ring(rings[0], rings[i][0])) {
       return bad_input(src + ": " + ring_name(i) + " at " + fmt(rings[i][0]) +
                        " lies outside the outer boundary");
-    for (std::size_t j = 1; j < rings.size(); ++j)
-      if (j != i && pocket::point_in_ring(rings[j], rings[i][0]))
+    }
+    for (std::size_t j = 1; j < rings.size(); ++j) {
+      if (j != i && !touch(i, j) && pocket::point_in_ring(rings[j], rings[i][0]))
         return bad_input(src + ": " + ring_name(i) + " lies inside " + ring_name(j));
+    }
   }
+  if (!contacts.pairs.empty()) return merged_pocket(rings, contacts.pairs, src);
   Pocket p;
   p.source = src;
   for (std::size_t i = 0; i < rings.size(); ++i) {

@@ -25,7 +25,6 @@ WallIndex::WallIndex(const PolygonSet& region, bool index) : region_(region) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       edges_.push_back({ring[i], ring[(i + 1) % n]});
       ray_edges_.push_back({ring[i], ring[(i + n - 1) % n]});
-      ring_of_.push_back(r);
       box.add(ring[i]);
     }
   }
@@ -196,28 +195,18 @@ bool WallIndex::inside(Vec2 p) const {
   if (region_.rings.empty()) return false;
   if (p.y < origin_.y || p.y > origin_.y + ny_ * cell_) return false;  // no edge straddles p.y
   const int j = std::clamp(static_cast<int>(std::floor((p.y - origin_.y) / cell_)), 0, ny_ - 1);
-  // Parity per ring of the crossings to the right of p, as point_in_ring counts them: the
-  // outer ring odd, every island even. Bits for the first 64 rings, a vector beyond.
-  std::uint64_t odd = 0;
-  std::vector<char> odd_more;
-  if (region_.rings.size() > 64) odd_more.assign(region_.rings.size(), 0);
+  // Parity of the crossings to the right of p over all rings, as point_in_region counts.
+  bool odd = false;
   for (std::uint32_t q = row_start_[static_cast<std::size_t>(j)];
        q < row_start_[static_cast<std::size_t>(j) + 1]; ++q) {
     const std::uint32_t k = row_ids_[q];
     const Vec2 a = ray_edges_[k].a, b = ray_edges_[k].b;
     if ((a.y > p.y) != (b.y > p.y)) {
       const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < x) {
-        const std::uint32_t r = ring_of_[k];
-        if (r < 64)
-          odd ^= std::uint64_t{1} << r;
-        else
-          odd_more[r] ^= 1;
-      }
+      odd = odd != (p.x < x);
     }
   }
-  if (odd != 1) return false;  // outer ring even, or an island odd
-  return std::none_of(odd_more.begin(), odd_more.end(), [](char c) { return c != 0; });
+  return odd;
 }
 
 void keep_off_walls(const WallIndex& walls, double reach, double clearance, Vec2 a, Vec2 b,

@@ -49,9 +49,8 @@ class WallIndex {
   void grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& farther) const;
 
   PolygonSet region_;
-  std::vector<Edge> edges_;             ///< every ring's edges, rings in order
-  std::vector<std::uint32_t> ring_of_;  ///< per edge
-  double cell_ = 0.0;                   ///< 0: not indexed
+  std::vector<Edge> edges_;  ///< every ring's edges, rings in order
+  double cell_ = 0.0;        ///< 0: not indexed
   Vec2 origin_;
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> start_;  ///< CSR, per cell (row-major): edges whose box meets it

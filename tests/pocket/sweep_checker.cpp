@@ -18,11 +18,13 @@ bool inside_ring(const Ring& r, Vec2 p) {
   }
   return in;
 }
+// Even-odd over all rings: inside an outer ring and none of its islands, for a region of
+// one part (outer ring, islands) or several.
 bool inside(const PolygonSet& s, Vec2 p) {
-  if (!inside_ring(s.rings[0], p)) return false;
-  for (std::size_t k = 1; k < s.rings.size(); ++k)
-    if (inside_ring(s.rings[k], p)) return false;
-  return true;
+  bool in = false;
+  for (const Ring& r : s.rings)
+    in = in != inside_ring(r, p);
+  return in;
 }
 double edge_distance(const PolygonSet& s, Vec2 p) {
   double best = std::numeric_limits<double>::infinity();

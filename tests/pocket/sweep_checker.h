@@ -44,7 +44,7 @@ struct SweepSample {
   double removed_mm2 = 0.0;       ///< material the disk removes here
 };
 
-/// region: outer ring then islands. The floor pass is the moves at the lowest z of the
+/// region: outer ring then islands (or several such parts; even-odd). The floor pass is the moves at the lowest z of the
 /// program; helix, ramp and plunge moves and the arcs at the bottom of a helix are the
 /// entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a wall is
 /// not counted as residual. residual_out: the centres of the residual's pixels (diagnosis).
