@@ -49,8 +49,25 @@ Result<std::string> read_file(const std::string& path) {
 
 Status write_file_atomic(const std::string& path, std::string_view content) {
   if (path.empty()) return io_error("(empty path)", "no output file named");
-  const fs::path target(path);
   std::error_code ec;
+  // A link is followed, so that the file it names is replaced and the link stays.
+  fs::path target(path);
+  if (fs::is_symlink(target, ec)) {
+    const fs::path real = fs::weakly_canonical(target, ec);
+    if (!ec) target = real;
+  }
+  // A device or a pipe (-o /dev/null, a named pipe) is written in place: there is no file
+  // to leave half-written, and renaming a temporary file over /dev/null would replace the
+  // device itself where the user may write to /dev.
+  const fs::file_status st = fs::status(target, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st)) {
+    std::ofstream out(target, std::ios::binary);
+    if (!out) return io_error(path, std::string("cannot write: ") + std::strerror(errno));
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) return io_error(path, "write failed");
+    return {};
+  }
   if (target.has_parent_path()) {
     fs::create_directories(target.parent_path(), ec);
     if (ec)
@@ -72,7 +89,7 @@ Status write_file_atomic(const std::string& path, std::string_view content) {
   }
   // rename() within one folder replaces the target atomically: readers see the old or the
   // new file, never a partial one.
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     const std::string why = std::strerror(errno);
     fs::remove(tmp, ec);
     return io_error(path, "cannot replace: " + why);

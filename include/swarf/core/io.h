@@ -13,7 +13,8 @@ namespace swarf {
 Result<std::string> read_file(const std::string& path);
 
 /// Writes content to path atomically (temporary file in the same folder, then rename).
-/// Creates missing parent folders.
+/// Creates missing parent folders. A symbolic link is followed (the file it names is
+/// replaced, the link kept); a device or pipe (/dev/null, a FIFO) is written in place.
 Status write_file_atomic(const std::string& path, std::string_view content);
 
 }  // namespace swarf
