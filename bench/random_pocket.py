@@ -2,7 +2,8 @@
 """A random pocket for the benchmarks (bench/pocket_random.sh, bench/compare_freecad_random.sh):
 a star, polygon, rectangle, circle or L outline up to 120 mm with 0-4 round or square islands
 (some nearer each other or a wall than the tool), a flat end mill of 3-20 mm and a stepover of
-5-40 % of its diameter. Seeds from 2000 on give part-like outlines instead (part_like below).
+5-40 % of its diameter. Seeds from 2000 on give part-like outlines instead (part_like below),
+seeds from 3000 on islands that overlap and cross the wall (careless below).
 The same seed gives the same pocket.
 
   python3 bench/random_pocket.py SEED OUT.json    prints: diameter stepover shape islands
@@ -116,6 +117,47 @@ def part_like():
     print(D, round(D * f, 3), kind, len(islands))
 
 
+def careless():
+    """Seeds from 3000 on: bosses drawn carelessly, as real drawings have them: round and
+    rectangular islands that overlap each other, cross the wall, lie along it edge to edge or
+    run right across the pocket (swarf merges them: the pocket is the outline minus their
+    union), on a rectangle, sharp or rounded. No island lies wholly inside another."""
+    D = random.choice([3, 4, 6, 8, 10, 12, 16, 20])
+    R = 0.5 * D
+    W = min(120.0, D * random.uniform(6, 14))
+    H = min(120.0, W * random.uniform(0.5, 1.0))
+    rc = R * random.choice([0.0, 1.02, 2.5])
+    outer = rounded_rect(0, 0, W, H, rc)
+    islands, boxes = [], []
+    for _ in range(random.randint(1, 5)):
+        w, h = D * random.uniform(0.6, 3.0), D * random.uniform(0.6, 3.0)
+        x0, y0 = random.uniform(-0.3 * w, W - 0.7 * w), random.uniform(-0.3 * h, H - 0.7 * h)
+        u = random.random()
+        if u < 0.15:
+            x0 = random.choice([0.0, W - w])  # edge on the wall
+        elif u < 0.25:
+            y0, h = -D, H + 2 * D  # right across
+        box = (x0, y0, x0 + w, y0 + h)
+        cx, cy = 0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])
+        inside = lambda b, x, y: b[0] < x < b[2] and b[1] < y < b[3]
+        if not (0 < cx < W and 0 < cy < H) or any(
+                inside(b, cx, cy) or inside(box, 0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3]))
+                for b in boxes):
+            continue
+        boxes.append(box)
+        if random.random() < 0.4 and u >= 0.25:
+            r = 0.5 * min(w, h)
+            islands.append(arc(cx, cy, r, 360, 0, 40)[:-1])
+        else:
+            islands.append(rounded_rect(*box, 0.0)[::-1])
+    json.dump({"outer": outer, "islands": islands}, open(out, "w"))
+    f = random.choice([0.05, 0.08, 0.1, 0.15, 0.2, 0.3, 0.4])
+    print(D, round(D * f, 3), "careless", len(islands))
+
+
+if seed >= 3000:
+    careless()
+    sys.exit(0)
 if seed >= 2000:
     part_like()
     sys.exit(0)
