@@ -123,8 +123,10 @@ Result<Pocket> make_pocket(Ring outer, std::vector<Ring> islands, std::string_vi
                        " lies outside the outer boundary");
     }
     for (std::size_t j = 1; j < rings.size(); ++j) {
-      if (j != i && !touch(i, j) && pocket::point_in_ring(rings[j], rings[i][0]))
-        return bad_input(src + ": " + ring_name(i) + " lies inside " + ring_name(j));
+      if (j != i && !touch(i, j) && pocket::point_in_ring(rings[j], rings[i][0])) {
+        return bad_input(src + ": " + ring_name(i) + " lies inside " + ring_name(j) +
+                         " (a pocket inside a boss needs its own job)");
+      }
     }
   }
   if (!contacts.pairs.empty()) return merged_pocket(rings, contacts.pairs, src);
