@@ -97,6 +97,15 @@ Result<OperationOutput> run(const OperationInput& in) {
                         " straight plunge(s) where no helix or ramp fits: the end mill must be "
                         "centre-cutting (--no-straight-plunge leaves that material instead)");
   }
+  if (r->neck_plunges > 0) {
+    out.summary["neck_plunges"] = r->neck_plunges;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%.1f mm of necks as wide as the tool plunged through in %d crescent plunges "
+                  "a layer rather than slotted (--no-straight-plunge slots them)",
+                  r->neck_length_mm, r->neck_plunges);
+    out.notes.push_back(text);
+  }
   // The adaptive pocket plans a flat end at the floor. A ball or bull-nose end mill cuts the
   // same path without a gouge (its disk at the walls is the full diameter), but leaves a
   // fillet of its corner radius where the floor meets the walls and, where a pass steps over
@@ -163,7 +172,9 @@ const OperationRegistrar kRegistrar(Operation{
                   "plunge points tried along the medial axis (the fastest path wins)", false},
             Param{"straight_plunge", ParamType::kBool, true,
                   "where no helix or ramp fits, go straight down at the plunge feed (needs a "
-                  "centre-cutting end mill); off: leave that material (material_left_mm2)",
+                  "centre-cutting end mill), and plunge through necks as wide as the tool "
+                  "rather than slot them; off: leave that material (material_left_mm2) and "
+                  "slot the necks",
                   false},
             Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
             number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),

@@ -69,9 +69,11 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
 namespace {
 
 using pocket::Entry;
+using pocket::KeptMove;
 using pocket::kWallClearanceMm;
 using pocket::LinkedPath;
 using pocket::Model;
+using pocket::NeckRun;
 
 struct Recorder {
   std::vector<std::uint32_t>* cells;
@@ -410,6 +412,24 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // below which a step counts as a link at all).
   const double graze_px =
       std::min(m.cut_px, m.target_px * std::pow(params.feed_mm_min / link_feed(params), 2));
+  // What each kept move (keep[q - 1] -> keep[q]) removes in the re-simulation.
+  std::vector<KeptMove> kept(keep.size());
+  for (std::size_t q = 1; q < keep.size(); ++q) {
+    KeptMove& k = kept[q];
+    for (std::size_t s = keep[q - 1]; s < keep[q]; ++s) {
+      k.px += res.steps[s].engagement_px;
+      k.len += res.steps[s].length_mm;
+      k.link = k.link && res.steps[s].engagement_px <= m.cut_px;
+      // graze_px is per full step: a shorter step may remove its share of it. (Before, a
+      // 0.17 mm move of a ø20 taking a pixel went at the link feed: 0.38 mm of radial
+      // depth by the sweep against a graze of 0.16, random pocket 957.)
+      k.fast = k.fast && res.steps[s].engagement_px <=
+                             graze_px * std::min(1.0, res.steps[s].length_mm / m.step_mm);
+    }
+    k.deg = angle_of(m, static_cast<int>(k.px), k.len);
+  }
+  const std::vector<NeckRun> necks =
+      params.straight_plunge ? pocket::neck_runs(m, lp, keep, kept) : std::vector<NeckRun>{};
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
@@ -420,6 +440,11 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     if (distance(at, lp.pts.front()) > 1e-9)
       tp.moves.push_back(
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
+    // A straight move between two points of a pass round an island's vertex cuts in by its
+    // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through its
+    // middle pushed off the wall to the same kWallClearanceMm as the wall passes.
+    std::vector<Vec2> via;
+    std::size_t next_neck = 0;
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
       const Vec3 end = to_vec3(lp.pts[b], z);
@@ -447,25 +472,53 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         tp.moves.push_back(make_move(MoveKind::kPlunge, end, params.plunge_feed_mm_min, false));
         continue;
       }
-      double px = 0.0, len = 0.0;
-      bool link = true, fast = true;
-      for (std::size_t s = a; s < b; ++s) {
-        px += res.steps[s].engagement_px;
-        len += res.steps[s].length_mm;
-        link = link && res.steps[s].engagement_px <= m.cut_px;
-        // graze_px is per full step: a shorter step may remove its share of it. (Before, a
-        // 0.17 mm move of a ø20 taking a pixel went at the link feed: 0.38 mm of radial
-        // depth by the sweep against a graze of 0.16, random pocket 957.)
-        fast = fast && res.steps[s].engagement_px <=
-                           graze_px * std::min(1.0, res.steps[s].length_mm / m.step_mm);
+      if (next_neck < necks.size() && necks[next_neck].first == q) {
+        // A neck barely wider than the tool, where every way through is a full slot: plunged
+        // through instead (neck_runs), then the passes between the plunges' holes are taken
+        // backwards, and the moves go through in the air at the link feed.
+        const NeckRun& n = necks[next_neck++];
+        const double z_safe = z_prev + 1.0;
+        std::vector<Vec2> neck{lp.pts[keep[n.first - 1]]};
+        for (std::size_t r = n.first; r <= n.last; ++r) {
+          via.clear();
+          pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[keep[r - 1]],
+                                 lp.pts[keep[r]], via);
+          neck.insert(neck.end(), via.begin(), via.end());
+          neck.push_back(lp.pts[keep[r]]);
+        }
+        const std::vector<pocket::NeckPlunge> holes =
+            pocket::neck_plunge_points(neck, 0.5 * m.radius_mm);
+        auto rapid = [&](Vec2 v, double zz) {
+          tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
+        };
+        rapid(tp.moves.back().end.xy(), z_safe);  // straight up from where the tool is
+        std::size_t v = 0;
+        for (const pocket::NeckPlunge& h : holes) {
+          for (; v < h.after; ++v)
+            rapid(neck[v + 1], z_safe);
+          if (distance(h.at, neck[v]) > 1e-9) rapid(h.at, z_safe);
+          tp.moves.push_back(
+              make_move(MoveKind::kPlunge, to_vec3(h.at, z), params.plunge_feed_mm_min, true));
+          if (&h != &holes.back()) rapid(h.at, z_safe);
+        }
+        for (std::size_t k = neck.size() - 1; k-- > 0;) {
+          tp.moves.push_back(
+              make_move(MoveKind::kFeed, to_vec3(neck[k], z), params.feed_mm_min, true));
+        }
+        for (std::size_t k = 1; k < neck.size(); ++k) {
+          tp.moves.push_back(
+              make_move(MoveKind::kFeed, to_vec3(neck[k], z), link_feed(params), false));
+        }
+        res.neck_plunges += layer == 1 ? static_cast<int>(holes.size()) : 0;
+        res.neck_length_mm += layer == 1 ? n.length_mm : 0.0;
+        q = n.last;
+        continue;
       }
+      const KeptMove& k = kept[q];
       Move mv =
-          make_move(MoveKind::kFeed, end, fast ? link_feed(params) : params.feed_mm_min, !link);
-      mv.engagement_deg = static_cast<float>(angle_of(m, static_cast<int>(px), len));
-      // A straight move between two points of a pass round an island's vertex cuts in by its
-      // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through
-      // its middle pushed off the wall to the same kWallClearanceMm as the wall passes.
-      std::vector<Vec2> via;
+          make_move(MoveKind::kFeed, end, k.fast ? link_feed(params) : params.feed_mm_min, !k.link);
+      mv.engagement_deg = static_cast<float>(k.deg);
+      via.clear();
       pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[a], lp.pts[b], via);
       for (const Vec2& v : via) {
         Move piece = mv;

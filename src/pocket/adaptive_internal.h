@@ -142,6 +142,33 @@ void snap_to_wall_offset(const Model& model, LinkedPath& lp);
 /// (wall_reach.cpp); their points go to lp.beyond_free.
 void reach_into_tips(const Model& model, LinkedPath& lp);
 
+/// What a kept output move removes in the re-simulation: pixels, path length, its angle
+/// (degrees), whether it is a link (removes at most cut_px a step) and whether it may go at
+/// the link feed (at most graze_px a step).
+struct KeptMove {
+  double px = 0.0, len = 0.0, deg = 0.0;
+  bool link = true, fast = true;
+};
+/// A run of kept moves first..last (indices into `keep`, each move keep[q - 1] -> keep[q])
+/// that cut a full slot: a neck barely wider than the tool (neck_plunges.cpp). Runs are
+/// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
+/// walls within a millimetre of the tool on both sides (1 mm or longer).
+struct NeckRun {
+  std::size_t first = 0, last = 0;
+  double length_mm = 0.0;
+};
+std::vector<NeckRun> neck_runs(const Model& model, const LinkedPath& lp,
+                               const std::vector<std::size_t>& keep,
+                               const std::vector<KeptMove>& kept);
+/// Where to plunge along a neck's path `way` (its first point already cut): evenly spaced,
+/// at most `spacing` apart along it, the last at its end; each with the index of the point
+/// of `way` it follows or sits on.
+struct NeckPlunge {
+  std::size_t after = 0;
+  Vec2 at;
+};
+std::vector<NeckPlunge> neck_plunge_points(const std::vector<Vec2>& way, double spacing);
+
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
 /// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,

@@ -64,8 +64,10 @@ struct AdaptiveParams {
   int plunge_candidates = 1;
   /// Where the tool fits but has no room for a helix or a ramp (a lobe behind a neck
   /// narrower than the tool, a pocket barely wider than it), go straight down into the
-  /// material at the plunge feed, which needs a centre-cutting end mill. false: such
-  /// material is left (material_left_mm2), and a pocket with no other way in is an error.
+  /// material at the plunge feed, which needs a centre-cutting end mill; and where the path
+  /// would slot through a neck as wide as the tool, plunge through it in crescents instead.
+  /// false: such material is left (material_left_mm2), a pocket with no other way in is an
+  /// error, and necks are slotted.
   bool straight_plunge = true;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
@@ -127,6 +129,10 @@ struct AdaptiveResult {
   /// Entries straight down into uncut material (AdaptiveParams::straight_plunge): places, not
   /// counting their repeats on lower layers.
   int straight_plunges = 0;
+  /// Necks barely wider than the tool, where every way through is a full slot, plunged
+  /// through instead (AdaptiveParams::straight_plunge): plunges and path length per layer.
+  int neck_plunges = 0;
+  double neck_length_mm = 0.0;
   double gouge_steps = 0;  ///< steps whose disk reaches past a wall (exact geometry; 0 expected)
 };
 

@@ -1,0 +1,93 @@
+// Necks barely wider than the tool: plunged through rather than slotted.
+//
+// Where the pocket narrows to a few tenths of a millimetre more than the tool, every way
+// through cuts a full slot (random pockets 1088, 1096: channels 0.08-0.2 mm wider than the
+// tool between an island and the wall), which the issue rules out outside the entry and
+// which loads the tool on its whole half-circumference at a feed chosen for the target
+// engagement. The emission (adaptive.cpp) plunges the tool down along such a run instead,
+// each plunge a crescent at most half a radius beyond the last hole (the tool's centre is
+// always over cut space, so even the first needs no centre-cutting end mill), then takes
+// the cusps between the holes backwards and goes through in the air. The plunges lie on the
+// path the moves follow (with the points that keep its chords off the walls), so they keep
+// off the walls as the moves do.
+#include <algorithm>
+#include <cmath>
+
+#include "pocket/adaptive_internal.h"
+
+namespace swarf::pocket {
+
+std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
+                               const std::vector<std::size_t>& keep,
+                               const std::vector<KeptMove>& kept) {
+  // A removal angle of 160 degrees is a cut 97 % of the diameter wide: a full slot wherever
+  // it is (the move chooser's slot test stops at 160 degrees too, move_chooser.cpp).
+  constexpr double kSlotDeg = 160.0;
+  // Between walls less than a millimetre beyond the tool on both sides, the model reads
+  // short: its material is what the free pixel centres reach, so the slivers a few tenths
+  // thick beside the tool are not in it, and a pass the sweep sees touching material across
+  // its whole front half reads 145-165 degrees (random pocket 1088: a ø20 between an island
+  // and the wall 20.08 mm apart, 11.8 mm of full slot by the sweep). There a cut of 110
+  // degrees (two thirds of the diameter wide) over a millimetre or more counts as the slot.
+  constexpr double kTightMarginMm = 1.0, kTightDeg = 110.0, kTightRunMm = 1.0;
+  // Shorter runs of full slot are single short moves whose removal per length reads high on
+  // the pixels.
+  constexpr double kMinRunMm = 0.2;
+  const double reach = m.radius_mm + m.wall_stock_mm + kTightMarginMm;
+  auto walled = [&](Vec2 p, Vec2 n) {
+    return !m.walls.inside(p + n * reach) && !m.walls.inside(p - n * reach);
+  };
+  auto tight = [&](std::size_t q) {
+    const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
+    const Vec2 d = normalized(b - a), n{-d.y, d.x};
+    return walled(a, n) && walled((a + b) * 0.5, n) && walled(b, n);
+  };
+  auto slot = [&](std::size_t q) {
+    if (lp.jump[keep[q - 1]] || kept[q].link) return false;
+    return kept[q].deg >= kSlotDeg || (kept[q].deg >= kTightDeg && tight(q));
+  };
+  std::vector<NeckRun> out;
+  for (std::size_t q = 1; q < keep.size();) {
+    if (!slot(q)) {
+      ++q;
+      continue;
+    }
+    NeckRun n;
+    n.first = q;
+    bool full = false;  // a full slot by the model itself
+    for (; q < keep.size() && slot(q); ++q) {
+      n.length_mm += kept[q].len;
+      full = full || kept[q].deg >= kSlotDeg;
+    }
+    n.last = q - 1;
+    // Tight runs shorter than a millimetre are mostly trochoidal loops in a channel, one
+    // move of each reading heavy (random pocket 998: five plunges for no slot by the sweep).
+    if (n.length_mm >= (full ? kMinRunMm : kTightRunMm)) out.push_back(n);
+  }
+  return out;
+}
+
+std::vector<NeckPlunge> neck_plunge_points(const std::vector<Vec2>& way, double spacing) {
+  std::vector<double> at(way.size(), 0.0);  // length along the way
+  for (std::size_t k = 1; k < way.size(); ++k)
+    at[k] = at[k - 1] + distance(way[k - 1], way[k]);
+  const double total = at.back();
+  const int n = std::max(1, static_cast<int>(std::ceil(total / spacing - 1e-9)));
+  std::vector<NeckPlunge> out;
+  std::size_t k = 0;
+  for (int i = 1; i <= n; ++i) {
+    if (i == n) {
+      out.push_back({way.size() - 1, way.back()});
+      break;
+    }
+    const double s = total * i / n;
+    while (k + 2 < way.size() && at[k + 1] <= s)
+      ++k;
+    const double seg = at[k + 1] - at[k];
+    const double t = seg > 0.0 ? (s - at[k]) / seg : 0.0;
+    out.push_back({k, way[k] + (way[k + 1] - way[k]) * std::clamp(t, 0.0, 1.0)});
+  }
+  return out;
+}
+
+}  // namespace swarf::pocket

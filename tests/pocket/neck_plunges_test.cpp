@@ -1,0 +1,140 @@
+// Necks barely wider than the tool: the path plunges through them in crescents instead of
+// cutting a full slot (neck_plunges.cpp), judged by the independent sweep.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "pocket/adaptive_internal.h"
+#include "pocket/adaptive_test_util.h"
+#include "pocket/sweep_checker.h"
+#include "swarf/pocket/adaptive.h"
+#include "swarf/pocket/pocket_input.h"
+
+namespace swarf {
+namespace {
+
+// Two 30 x 30 mm chambers joined by a channel 15 mm long and 10.1 mm wide, for a ø10 (a
+// tenth wider, as the necks of random pockets 1088 and 1096; from 0.3 wider the path gets
+// through without a slot).
+Pocket dumbbell() {
+  return make_pocket({{0, 0},
+                      {30, 0},
+                      {30, 10},
+                      {45, 10},
+                      {45, 0},
+                      {75, 0},
+                      {75, 30},
+                      {45, 30},
+                      {45, 20.1},
+                      {30, 20.1},
+                      {30, 30},
+                      {0, 30}},
+                     {}, "dumbbell")
+      .value();
+}
+
+struct Cut {
+  AdaptiveResult result;
+  testing::SweepReport sweep;
+};
+
+Cut cut(bool plunge) {
+  const Pocket p = dumbbell();
+  AdaptiveParams ap = testing::params_3mm_deep(1.0);
+  ap.depth_mm = 6.0;
+  ap.straight_plunge = plunge;
+  auto r = adaptive_pocket(p, testing::flat_mill(10.0), ap);
+  EXPECT_TRUE(r.ok()) << r.status().to_string();
+  Cut c{r.value(), {}};
+  c.sweep = testing::sweep_check(p.region, 5.0, c.result.toolpath, c.result.target_engagement_deg,
+                                 0.05, 0.2);
+  std::printf("  plunge %d: slot %.1f mm, gouge %.4f mm, residual %.2f mm2, neck plunges %d\n",
+              plunge, c.sweep.slot_length_mm, c.sweep.max_gouge_mm, c.sweep.residual_mm2,
+              c.result.neck_plunges);
+  return c;
+}
+
+TEST(NeckPlunges, ANeckAsWideAsTheToolIsPlungedThroughNotSlotted) {
+  const Cut slotted = cut(false);
+  EXPECT_GT(slotted.sweep.slot_length_mm, 3.0);  // what the neck costs without the plunges
+  EXPECT_EQ(slotted.result.neck_plunges, 0);
+  const Cut plunged = cut(true);
+  EXPECT_LE(plunged.sweep.slot_length_mm, 0.3);
+  EXPECT_GT(plunged.result.neck_plunges, 0);
+  EXPECT_LE(plunged.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(plunged.sweep.residual_mm2, slotted.sweep.residual_mm2 + 0.05);
+  // Each plunge in a neck is a crescent: its centre within half a radius of the last hole
+  // or, for a neck's first, of where the tool rose from the floor, so the tool's centre is
+  // over cut space. (The entry's helix is not a plunge move: every kPlunge here is in a neck.)
+  const std::vector<Move>& mv = plunged.result.toolpath.moves;
+  const double floor_z = -6.0;
+  int plunges = 0;
+  Vec2 last_cut{1e9, 1e9};
+  for (std::size_t k = 1; k < mv.size(); ++k) {
+    if (mv[k].kind == MoveKind::kPlunge) {
+      ++plunges;
+      EXPECT_LE(distance(mv[k].end.xy(), last_cut), 0.5 * 5.0 + 1e-6) << "move " << k;
+    }
+    if (std::abs(mv[k].end.z - floor_z) < 1e-9) last_cut = mv[k].end.xy();
+  }
+  EXPECT_EQ(plunges, plunged.result.neck_plunges);
+}
+
+// Which runs of output moves count as a neck's slot (pocket::neck_runs), on the model of a
+// ø20 in a dumbbell whose neck is 20.08 mm wide, as random pocket 1088's (the model's
+// removal reads 145-165 degrees there where the sweep sees a full slot).
+TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
+  const Pocket p = make_pocket({{0, 0},
+                                {50, 0},
+                                {50, 15},
+                                {70, 15},
+                                {70, 0},
+                                {120, 0},
+                                {120, 50},
+                                {70, 50},
+                                {70, 35.08},
+                                {50, 35.08},
+                                {50, 50},
+                                {0, 50}},
+                               {}, "dumbbell 20")
+                       .value();
+  auto m = pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+  ASSERT_TRUE(m.ok()) << m.status().to_string();
+  // `count` moves of 0.5 mm along y = y0 from x = x0, each removing `deg` by the model.
+  auto runs = [&](double x0, double y0, int count, double deg) {
+    pocket::LinkedPath lp;
+    std::vector<std::size_t> keep;
+    std::vector<pocket::KeptMove> kept(1);
+    for (int k = 0; k <= count; ++k) {
+      lp.pts.push_back({x0 + 0.5 * k, y0});
+      keep.push_back(static_cast<std::size_t>(k));
+      if (k == 0) continue;
+      lp.kind.push_back(StepKind::kCut);
+      lp.jump.push_back(false);
+      lp.entry.push_back(-1);
+      pocket::KeptMove km;
+      km.len = 0.5;
+      km.deg = deg;
+      km.link = false;
+      km.fast = false;
+      kept.push_back(km);
+    }
+    return pocket::neck_runs(*m, lp, keep, kept);
+  };
+  const double axis = 25.04;  // the neck's axis; the tool has 0.04 mm each side
+  const auto neck = runs(52.0, axis, 20, 130.0);
+  ASSERT_EQ(neck.size(), 1u);
+  EXPECT_EQ(neck[0].first, 1u);
+  EXPECT_EQ(neck[0].last, 20u);
+  EXPECT_DOUBLE_EQ(neck[0].length_mm, 10.0);
+  EXPECT_TRUE(runs(52.0, axis, 20, 100.0).empty());   // a lighter cut is cut as it is
+  EXPECT_TRUE(runs(52.0, axis, 1, 130.0).empty());    // 0.5 mm: a loop of a trochoid
+  EXPECT_TRUE(runs(15.0, axis, 20, 130.0).empty());   // the same cut in a chamber
+  EXPECT_EQ(runs(15.0, axis, 20, 165.0).size(), 1u);  // a full slot anywhere
+  EXPECT_EQ(runs(15.0, axis, 1, 165.0).size(), 1u);   // however short, from 0.2 mm
+}
+
+}  // namespace
+}  // namespace swarf
