@@ -150,7 +150,23 @@ Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view sourc
   std::vector<Ring> islands;
   for (std::size_t i = 0; i < loops.size(); ++i)
     if (i != outer) islands.push_back(std::move(loops[i]));
-  return make_pocket(std::move(loops[outer]), std::move(islands), source);
+  const PolygonSet outline = normalized(PolygonSet{{loops[outer]}});
+  auto p = make_pocket(std::move(loops[outer]), islands, source);
+  if (!p.ok() || p->notes.empty()) return p;
+  // A drawing's loops have no roles but their sizes. A loop inside the outline, touching it
+  // or another loop, is a boss; one that crosses the outline, partly outside it, may as well
+  // be part of the pocket drawn as a second shape as a boss on the wall: refused rather than
+  // guessed (JSON names its islands, and there such an island is merged).
+  for (std::size_t i = 0; i < islands.size(); ++i) {
+    const PolygonSet loop = normalized(PolygonSet{{islands[i]}});
+    if (area(subtract(loop, outline)) > 1e-6 && area(intersect(loop, outline)) > 1e-6) {
+      return bad_input(std::string(source) + ": island " + std::to_string(i + 1) +
+                       " (a closed loop of the drawing) crosses the outer boundary (the largest "
+                       "loop): a boss on the wall or part of the pocket? Draw the outline as one "
+                       "loop, or name the islands in a JSON pocket");
+    }
+  }
+  return p;
 }
 
 }  // namespace pocket

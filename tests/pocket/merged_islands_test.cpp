@@ -79,6 +79,28 @@ TEST(MergedIslands, WhatIsNotAPocketIsStillRejected) {
   EXPECT_NE(all.status().message().find("cover the whole pocket"), std::string::npos);
 }
 
+// A drawing's loops have no roles but their sizes: loops inside the outline that overlap
+// or touch it are bosses and merged; a loop crossing the outline (partly outside) may be
+// part of the pocket as well as a boss, and is refused rather than guessed.
+TEST(MergedIslands, DrawingsMergeLoopsInsideAndRefuseLoopsAcrossTheOutline) {
+  auto inside = parse_pocket_svg(
+      R"(<svg><rect x="0" y="0" width="50" height="40"/><rect x="10" y="10" width="15" height="15"/>)"
+      R"(<rect x="20" y="20" width="10" height="10"/><rect x="40" y="5" width="10" height="10"/></svg>)",
+      "in.svg");
+  ASSERT_TRUE(inside.ok()) << inside.status().to_string();
+  EXPECT_NEAR(area(inside->region), 2000.0 - (225.0 + 100.0 - 25.0) - 100.0, 1e-6);
+  EXPECT_TRUE(says(inside->notes, "island 3 crosses or touches the outer boundary"));
+  auto across = parse_pocket_svg(
+      R"(<svg><rect x="0" y="0" width="50" height="40"/><rect x="40" y="5" width="20" height="10"/></svg>)",
+      "across.svg");
+  ASSERT_FALSE(across.ok());
+  EXPECT_EQ(across.status().code(), Error::kBadInput);
+  EXPECT_NE(across.status().message().find("across.svg: island 1 (a closed loop of the drawing) "
+                                           "crosses the outer boundary"),
+            std::string::npos)
+      << across.status().message();
+}
+
 // Clears `region` (built by hand) from the pocket made of `outer` and `islands`: no gouge by
 // exact distances, nothing reachable left but a few checker pixels per corner.
 void expect_cleared(const Ring& outer, const std::vector<Ring>& islands, const PolygonSet& region,
