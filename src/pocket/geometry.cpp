@@ -189,15 +189,6 @@ void for_each_crossing(const std::vector<Ring>& rings, Visit&& visit) {
 
 }  // namespace
 
-std::optional<Crossing> find_crossing(const std::vector<Ring>& rings) {
-  std::optional<Crossing> found;
-  for_each_crossing(rings, [&](const Crossing& x) {
-    found = x;
-    return true;
-  });
-  return found;
-}
-
 RingContacts find_ring_contacts(const std::vector<Ring>& rings) {
   RingContacts out;
   for_each_crossing(rings, [&](const Crossing& x) {

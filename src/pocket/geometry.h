@@ -42,11 +42,9 @@ struct Crossing {
   std::size_t ring_a = 0, edge_a = 0, ring_b = 0, edge_b = 0;
   Vec2 point;
 };
-/// First crossing between non-adjacent edges of the rings (touching counts), or none.
-/// Sweep over x-sorted edge boxes: O(n log n + k).
-std::optional<Crossing> find_crossing(const std::vector<Ring>& rings);
-/// What touches what among the rings: the first self-crossing in the sweep's order (the
-/// search stops there), else every pair of distinct rings with touching edges (ring_a <
+/// What touches what among the rings (non-adjacent edges that cross or touch, by a sweep
+/// over x-sorted edge boxes, O(n log n + k)): the first self-crossing in the sweep's order
+/// (the search stops there), else every pair of distinct rings with touching edges (ring_a <
 /// ring_b, sorted).
 struct RingContacts {
   std::optional<Crossing> self_crossing;
