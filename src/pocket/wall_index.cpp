@@ -88,8 +88,7 @@ void WallIndex::grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& far
   const double gx1 = origin_.x + nx_ * cell_, gy1 = origin_.y + ny_ * cell_;
   int pi0 = 0, pi1 = -1, pj0 = 0, pj1 = -1;  // the cells already visited (none yet)
   struct RingCell {
-    double gap_sq;
-    Vec2 c0;
+    double gap_sq;  // from the query's box to the cell's
     std::size_t cell;
   };
   thread_local std::vector<RingCell> ring;
@@ -113,13 +112,15 @@ void WallIndex::grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& far
                                 static_cast<std::size_t>(i);
           if (start_[c] == start_[c + 1]) continue;
           const Vec2 c0{origin_.x + i * cell_, origin_.y + j * cell_};
-          ring.push_back({box_gap_sq(lo, hi, c0, c0 + Vec2{cell_, cell_}), c0, c});
+          ring.push_back({box_gap_sq(lo, hi, c0, c0 + Vec2{cell_, cell_}), c});
         }
       }
       std::sort(ring.begin(), ring.end(),
                 [](const RingCell& x, const RingCell& y) { return x.gap_sq < y.gap_sq; });
+      // The best answer only shrinks and the cells come nearest first: once one is farther,
+      // so are the rest.
       for (const RingCell& rc : ring) {
-        if (farther(rc.c0, rc.c0 + Vec2{cell_, cell_})) continue;
+        if (farther(rc.gap_sq)) break;
         for (std::uint32_t k = start_[rc.cell]; k < start_[rc.cell + 1]; ++k)
           visit(ids_[k]);
       }
@@ -144,8 +145,7 @@ double WallIndex::distance(Vec2 p) const {
         if (box_gap_sq(p, p, e.a, e.b) >= d2) return;
         d2 = std::min(d2, norm_sq(p - nearest_on_segment(p, e.a, e.b)));
       },
-      [&](double r) { return d2 <= r * r; },
-      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(p, p, c0, c1) >= d2; });
+      [&](double r) { return d2 <= r * r; }, [&](double gap_sq) { return gap_sq >= d2; });
   return std::sqrt(d2);
 }
 
@@ -168,8 +168,7 @@ Vec2 WallIndex::nearest(Vec2 p) const {
           found = true;
         }
       },
-      [&](double r) { return best <= r * r; },
-      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(p, p, c0, c1) > best; });
+      [&](double r) { return best <= r * r; }, [&](double gap_sq) { return gap_sq > best; });
   if (!found) return p;
   return nearest_on_segment(p, edges_[best_k].a, edges_[best_k].b);
 }
@@ -185,8 +184,7 @@ double WallIndex::segment_distance(Vec2 a, Vec2 b) const {
         if (box_gap_sq(lo, hi, c, e) >= d * d) return;  // also once d is 0
         d = std::min(d, segment_segment_distance(a, b, c, e));
       },
-      [&](double r) { return d <= r; },
-      [&](Vec2 c0, Vec2 c1) { return box_gap_sq(lo, hi, c0, c1) >= d * d; });
+      [&](double r) { return d <= r; }, [&](double gap_sq) { return gap_sq >= d * d; });
   return d;
 }
 

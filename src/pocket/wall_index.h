@@ -44,7 +44,7 @@ class WallIndex {
   };
   // visit(edge) for the edges of the cells of [lo - r, hi + r], r one cell and doubling,
   // until done(r) or the square covers the grid; each cell once, and none whose box is
-  // farther(cell_lo, cell_hi) than the best answer so far.
+  // farther(squared gap from the query's box to the cell's) than the best answer so far.
   template <class Visit, class Done, class Farther>
   void grow(Vec2 lo, Vec2 hi, Visit&& visit, Done&& done, Farther&& farther) const;
 
