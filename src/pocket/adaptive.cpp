@@ -428,8 +428,32 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     }
     k.deg = angle_of(m, static_cast<int>(k.px), k.len);
   }
+  // A straight move between two points of a pass round an island's vertex cuts in by its
+  // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through its
+  // middle pushed off the wall to the same kWallClearanceMm as the wall passes. The same on
+  // every layer, so found once.
+  std::vector<std::vector<Vec2>> via(keep.size());
+  for (std::size_t q = 1; q < keep.size(); ++q) {
+    if (lp.jump[keep[q - 1]]) continue;
+    pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[keep[q - 1]], lp.pts[keep[q]],
+                           via[q]);
+  }
+  // Necks: the way through each (its moves with their middle points) and the plunges on it.
   const std::vector<NeckRun> necks =
       params.straight_plunge ? pocket::neck_runs(m, lp, keep, kept) : std::vector<NeckRun>{};
+  std::vector<std::vector<Vec2>> neck_way(necks.size());
+  std::vector<std::vector<pocket::NeckPlunge>> neck_holes(necks.size());
+  for (std::size_t i = 0; i < necks.size(); ++i) {
+    std::vector<Vec2>& way = neck_way[i];
+    way.push_back(lp.pts[keep[necks[i].first - 1]]);
+    for (std::size_t r = necks[i].first; r <= necks[i].last; ++r) {
+      way.insert(way.end(), via[r].begin(), via[r].end());
+      way.push_back(lp.pts[keep[r]]);
+    }
+    neck_holes[i] = pocket::neck_plunge_points(way, 0.5 * m.radius_mm);
+    res.neck_plunges += static_cast<int>(neck_holes[i].size());
+    res.neck_length_mm += necks[i].length_mm;
+  }
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
@@ -440,10 +464,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     if (distance(at, lp.pts.front()) > 1e-9)
       tp.moves.push_back(
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
-    // A straight move between two points of a pass round an island's vertex cuts in by its
-    // sagitta (4 um between points 0.4 mm apart, measured by the sweep): it goes through its
-    // middle pushed off the wall to the same kWallClearanceMm as the wall passes.
-    std::vector<Vec2> via;
     std::size_t next_neck = 0;
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
@@ -476,18 +496,11 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         // A neck barely wider than the tool, where every way through is a full slot: plunged
         // through instead (neck_runs), then the passes between the plunges' holes are taken
         // backwards, and the moves go through in the air at the link feed.
-        const NeckRun& n = necks[next_neck++];
+        const NeckRun& n = necks[next_neck];
+        const std::vector<Vec2>& neck = neck_way[next_neck];
+        const std::vector<pocket::NeckPlunge>& holes = neck_holes[next_neck];
+        ++next_neck;
         const double z_safe = z_prev + 1.0;
-        std::vector<Vec2> neck{lp.pts[keep[n.first - 1]]};
-        for (std::size_t r = n.first; r <= n.last; ++r) {
-          via.clear();
-          pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[keep[r - 1]],
-                                 lp.pts[keep[r]], via);
-          neck.insert(neck.end(), via.begin(), via.end());
-          neck.push_back(lp.pts[keep[r]]);
-        }
-        const std::vector<pocket::NeckPlunge> holes =
-            pocket::neck_plunge_points(neck, 0.5 * m.radius_mm);
         auto rapid = [&](Vec2 v, double zz) {
           tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
         };
@@ -509,8 +522,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
           tp.moves.push_back(
               make_move(MoveKind::kFeed, to_vec3(neck[k], z), link_feed(params), false));
         }
-        res.neck_plunges += layer == 1 ? static_cast<int>(holes.size()) : 0;
-        res.neck_length_mm += layer == 1 ? n.length_mm : 0.0;
         q = n.last;
         continue;
       }
@@ -518,9 +529,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       Move mv =
           make_move(MoveKind::kFeed, end, k.fast ? link_feed(params) : params.feed_mm_min, !k.link);
       mv.engagement_deg = static_cast<float>(k.deg);
-      via.clear();
-      pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[a], lp.pts[b], via);
-      for (const Vec2& v : via) {
+      for (const Vec2& v : via[q]) {
         Move piece = mv;
         piece.end = to_vec3(v, z);
         tp.moves.push_back(piece);
