@@ -150,9 +150,9 @@ Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view sourc
   std::vector<Ring> islands;
   for (std::size_t i = 0; i < loops.size(); ++i)
     if (i != outer) islands.push_back(std::move(loops[i]));
-  const PolygonSet outline = normalized(PolygonSet{{loops[outer]}});
-  auto p = make_pocket(std::move(loops[outer]), islands, source);
+  auto p = make_pocket(loops[outer], islands, source);
   if (!p.ok() || p->notes.empty()) return p;
+  const PolygonSet outline = normalized(PolygonSet{{loops[outer]}});
   // A drawing's loops have no roles but their sizes. A loop inside the outline, touching it
   // or another loop, is a boss; one that crosses the outline, partly outside it, may as well
   // be part of the pocket drawn as a second shape as a boss on the wall: refused rather than

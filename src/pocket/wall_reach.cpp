@@ -37,7 +37,6 @@ namespace {
 // (bench/RESULTS-pocket.md, session 10).
 constexpr double kSnapRidingPx = 1.25, kSnapLastPx = 2.0, kLastPassReach = 0.1;
 
-//
 // A point whose snapped place comes nearer another wall is where two walls (or a wall and
 // an island) are less than a tool diameter apart. The chooser's pixel test keeps the disk
 // within about a fifth of a pixel of them, not exactly off them: the random pocket sweep
