@@ -53,19 +53,35 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
     zmin = std::min(zmin, m.end.z);
   std::vector<Sample> out;
   Vec3 at = tp.moves.empty() ? Vec3{} : tp.moves.front().end;
+  // The entry's closing pass at the floor, which the way down leaves to do: the full
+  // circles round a helix's axis, or the pass back along a ramp's last leg (its wedge).
+  // Any other floor move, arcs of a fitted path included, is cutting.
+  enum class Closing { kNone, kHelix, kRamp } closing = Closing::kNone;
+  Vec3 descent_from{}, helix_axis{};
   for (std::size_t mi = 0; mi < tp.moves.size(); ++mi) {
     const Move& m = tp.moves[mi];
     const Vec3 from = at;
     at = m.end;
-    if (std::abs(m.end.z - zmin) > 1e-6) continue;
-    if (m.kind == MoveKind::kRapid) continue;
+    if (std::abs(m.end.z - zmin) > 1e-6 || m.kind == MoveKind::kRapid) {
+      closing = Closing::kNone;
+      continue;
+    }
     if (std::abs(from.z - zmin) > 1e-6) {
       // Down to the floor (a plunge, a helix's or a ramp's last piece): the disk where it
       // arrives is cut even when no floor move follows (a plunge straight back up).
       out.push_back({m.end.xy(), {1.0, 0.0}, 0.0, true, mi});
+      closing = m.kind == MoveKind::kHelix  ? Closing::kHelix
+                : m.kind == MoveKind::kRamp ? Closing::kRamp
+                                            : Closing::kNone;
+      descent_from = from;
+      helix_axis = m.center;
       continue;
     }
-    const bool entry = m.kind != MoveKind::kFeed;
+    const bool entry =
+        (closing == Closing::kHelix && m.is_arc() &&
+         norm(m.center.xy() - helix_axis.xy()) < 1e-6) ||
+        (closing == Closing::kRamp && !m.is_arc() && norm(m.end.xy() - descent_from.xy()) < 1e-6);
+    if (!entry) closing = Closing::kNone;
     if (m.is_arc()) {
       const Vec2 c = m.center.xy();
       const double r = norm(from.xy() - c);

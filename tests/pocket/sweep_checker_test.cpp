@@ -35,5 +35,43 @@ TEST(SweepChecker, AStraightPlungeCutsItsDisk) {
   EXPECT_EQ(s.cutting_length_mm, 0.0);  // a plunge is part of an entry, not a floor pass
 }
 
+// What belongs to an entry: the ramp's way down and its pass back along the last leg at
+// the floor (the wedge that leg left), the helix's way down and its closing circle. What
+// follows at the floor is cutting, an arc as much as a line. Both sweeps read the ramp's
+// closing pass as a 180-degree slot before (it is a G1 at the floor, kind kFeed once read
+// from G-code; 11.5 mm of "slot" on random pocket 1122), and counted no arc at the floor
+// at all (a program with fitted arcs was judged on its lines only).
+// A 100 x 40 box and a ø10 tool.
+TEST(SweepChecker, TheEntrysClosingPassIsEntryAndWhatFollowsIsCutting) {
+  const PolygonSet box{{Ring{{0, 0}, {100, 0}, {100, 40}, {0, 40}}}};
+  auto arc_to = [](MoveKind kind, Vec3 end, Vec2 centre, double z) {
+    Move m = move_to(kind, end);
+    m.center = {centre.x, centre.y, z};
+    return m;
+  };
+  Toolpath ramp;
+  ramp.moves = {move_to(MoveKind::kRapid, {10, 20, 5}), move_to(MoveKind::kRamp, {30, 20, -0.5}),
+                move_to(MoveKind::kRamp, {10, 20, -1}), move_to(MoveKind::kFeed, {30, 20, -1}),
+                move_to(MoveKind::kFeed, {50, 20, -1})};
+  const auto r = testing::sweep_check(box, 5.0, ramp, 60.0, 0.05, 0.0);
+  EXPECT_NEAR(r.cutting_length_mm, 20.0, 0.3);  // 30 -> 50 only
+  EXPECT_NEAR(r.slot_length_mm, 20.0, 0.3);
+  // A helix down round (70, 20), two closing half circles, then an arc of a fitted path:
+  // a half circle of radius 10 round (80, 20) from (70, 20) to (90, 20), into material.
+  Toolpath helix;
+  helix.moves = {move_to(MoveKind::kRapid, {72, 20, 5}),
+                 arc_to(MoveKind::kHelix, {68, 20, -0.5}, {70, 20}, -0.5),
+                 arc_to(MoveKind::kHelix, {72, 20, -1}, {70, 20}, -1),
+                 arc_to(MoveKind::kArc, {68, 20, -1}, {70, 20}, -1),
+                 arc_to(MoveKind::kArc, {72, 20, -1}, {70, 20}, -1),
+                 move_to(MoveKind::kFeed, {70, 20, -1}),
+                 arc_to(MoveKind::kArc, {90, 20, -1}, {80, 20}, -1)};
+  helix.moves.back().clockwise = true;
+  const auto h = testing::sweep_check(box, 5.0, helix, 60.0, 0.05, 0.0);
+  // The first 2 mm of the arc lie in the helix's hole (7 mm round its axis).
+  EXPECT_NEAR(h.cutting_length_mm, 10.0 * kPi - 2.0, 0.5);
+  EXPECT_GT(h.max_engagement_deg, 120.0);
+}
+
 }  // namespace
 }  // namespace swarf
