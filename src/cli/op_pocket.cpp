@@ -99,6 +99,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   }
   if (r->neck_plunges > 0) {
     out.summary["neck_plunges"] = r->neck_plunges;
+    out.summary["neck_length_mm"] = s.plunged_length_mm;
     char text[200];
     std::snprintf(text, sizeof text,
                   "%.1f mm of necks as wide as the tool plunged through in %d crescent plunges "

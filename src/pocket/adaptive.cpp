@@ -453,6 +453,8 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     neck_holes[i] = pocket::neck_plunge_points(way, 0.5 * m.radius_mm);
     res.neck_plunges += static_cast<int>(neck_holes[i].size());
     res.neck_length_mm += necks[i].length_mm;
+    for (std::size_t s = keep[necks[i].first - 1]; s < keep[necks[i].last]; ++s)
+      res.steps[s].plunged = true;
   }
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
@@ -549,7 +551,10 @@ AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
   std::vector<std::pair<double, double>> eng;  // angle, length
   const double cut_px = std::max(2.0, 0.04 * r.target_engagement_px);
   for (const AdaptiveStep& st : r.steps) {
-    if (st.engagement_px > cut_px) {
+    if (st.plunged) {
+      // Plunged through, then passed in the air: neither a cut nor a link of the path.
+      s.plunged_length_mm += st.length_mm;
+    } else if (st.engagement_px > cut_px) {
       s.cutting_length_mm += st.length_mm;
       eng.push_back({st.engagement_deg, st.length_mm});
       s.max_deviation_deg = std::max(s.max_deviation_deg, st.deviation_deg);
@@ -560,7 +565,9 @@ AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
     }
   }
   const double layers = std::max(1, r.layers);
-  s.time_s = (s.cutting_length_mm / p.feed_mm_min + s.air_length_mm / link_feed(p)) * layers * 60.0;
+  s.time_s = ((s.cutting_length_mm + s.plunged_length_mm) / p.feed_mm_min +
+              (s.air_length_mm + s.plunged_length_mm) / link_feed(p)) *
+             layers * 60.0;
   if (s.cutting_length_mm > 0) s.within_20pct /= s.cutting_length_mm;
   if (!eng.empty()) {
     double sum = 0.0;
@@ -599,7 +606,8 @@ std::string steps_csv(const AdaptiveResult& r) {
   char b[256];
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
     const AdaptiveStep& s = r.steps[k];
-    const char* kind = s.kind == StepKind::kCut        ? "cut"
+    const char* kind = s.plunged                       ? "neck"
+                       : s.kind == StepKind::kCut      ? "cut"
                        : s.kind == StepKind::kBoundary ? "boundary"
                                                        : "link";
     std::snprintf(b, sizeof b, "%zu,%.4f,%.4f,%s,%d,%.2f,%.2f,%.4f\n", k, s.position.x,

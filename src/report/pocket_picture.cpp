@@ -26,8 +26,8 @@ Image pocket_engagement_picture(const AdaptiveResult& r, int max_side) {
       Rgb& px = img.at(bi, h - 1 - bj);
       if (c == 1) {
         px = Rgb{150, 60, 40};
-      } else if (c == 2) {
-        px = Rgb{200, 200, 200};
+      } else if (c == 2 || (c >= 3 && c - 3 < r.steps.size() && r.steps[c - 3].plunged)) {
+        px = Rgb{200, 200, 200};  // the entries, and the necks plunged through
       } else if (c >= 3 && c - 3 < r.steps.size()) {
         px = heat_color(r.steps[c - 3].engagement_deg / (2.0 * r.target_engagement_deg));
       }

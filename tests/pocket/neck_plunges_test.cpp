@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "pocket/adaptive_internal.h"
@@ -56,11 +58,37 @@ Cut cut(bool plunge) {
   return c;
 }
 
+// Full slot (>= 170 degrees, as the sweep counts it) in the path's steps: plunged through,
+// and cut as passes.
+std::pair<double, double> report_slot_mm(const AdaptiveResult& r) {
+  double plunged = 0.0, cut = 0.0;
+  for (const AdaptiveStep& st : r.steps)
+    if (st.kind != StepKind::kLink && st.engagement_deg >= 170.0)
+      (st.plunged ? plunged : cut) += st.length_mm;
+  return {plunged, cut};
+}
+
 TEST(NeckPlunges, ANeckAsWideAsTheToolIsPlungedThroughNotSlotted) {
   const Cut slotted = cut(false);
   EXPECT_GT(slotted.sweep.slot_length_mm, 3.0);  // what the neck costs without the plunges
   EXPECT_EQ(slotted.result.neck_plunges, 0);
   const Cut plunged = cut(true);
+  // The report says what the output does: the steps of a neck plunged through are "neck"
+  // in the per-step CSV and out of the summary's cutting length and engagement figures
+  // (before, both counted them as the full slot the pass would have been, while the G-code
+  // and the sweep had the plunges). Without the plunges they are cuts, the slot among them.
+  AdaptiveParams ap = testing::params_3mm_deep(1.0);
+  ap.depth_mm = 6.0;
+  const auto [slotted_plunged_mm, slotted_cut_mm] = report_slot_mm(slotted.result);
+  EXPECT_EQ(slotted_plunged_mm, 0.0);
+  EXPECT_GT(slotted_cut_mm, 3.0);
+  EXPECT_EQ(summarize(slotted.result, ap).plunged_length_mm, 0.0);
+  EXPECT_EQ(steps_csv(slotted.result).find(",neck,"), std::string::npos);
+  const auto [plunged_mm, cut_mm] = report_slot_mm(plunged.result);
+  EXPECT_GT(plunged_mm, 3.0);
+  EXPECT_EQ(cut_mm, 0.0);
+  EXPECT_NEAR(summarize(plunged.result, ap).plunged_length_mm, plunged.result.neck_length_mm, 1e-9);
+  EXPECT_NE(steps_csv(plunged.result).find(",neck,"), std::string::npos);
   EXPECT_LE(plunged.sweep.slot_length_mm, 0.3);
   EXPECT_GT(plunged.result.neck_plunges, 0);
   EXPECT_LE(plunged.sweep.max_gouge_mm, 1e-6);

@@ -90,6 +90,10 @@ struct AdaptiveStep {
   double engagement_deg = 0.0;  ///< equivalent engagement angle of that count
   double deviation_deg = 0.0;   ///< turn from the previous step's direction
   double length_mm = 0.0;
+  /// In a neck barely wider than the tool that the output plunges through rather than
+  /// cuts as a pass (AdaptiveResult::neck_plunges): not a cut of the path, so out of the
+  /// engagement figures; its engagement is what the pass would have been.
+  bool plunged = false;
 };
 
 /// The simulation bitmap after the final path, for the report picture: per pixel 0 =
@@ -160,7 +164,12 @@ double stepover_for_angle_mm(double engagement_deg, double tool_radius_mm);
 struct AdaptiveSummary {
   double cutting_length_mm = 0.0;
   double air_length_mm = 0.0;
-  double time_s = 0.0;  ///< cutting steps at the feed, the others at the link feed, all layers
+  /// Necks plunged through (AdaptiveStep::plunged): neither cutting nor air length.
+  double plunged_length_mm = 0.0;
+  /// Cutting steps at the feed, the others at the link feed, necks at both (the cusps
+  /// between the plunges at the feed, then the pass in the air), all layers; the plunges and
+  /// retracts are not counted (machining_time_s of the toolpath's metrics counts them).
+  double time_s = 0.0;
   double engagement_mean_deg = 0.0;
   double engagement_p5_deg = 0.0;
   double engagement_p95_deg = 0.0;
