@@ -1,0 +1,240 @@
+// What the adaptive pocket runs at the link feed (5x the cutting feed by default): links
+// over cleared floor and moves that graze, judged by the independent sweep of
+// tests/pocket/sweep_checker.cpp per move.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pocket/adaptive_test_util.h"
+#include "pocket/sweep_checker.h"
+#include "swarf/pocket/adaptive.h"
+#include "swarf/toolpath/metrics.h"
+
+namespace swarf {
+namespace {
+
+using testing::flat_mill;
+using testing::params_3mm_deep;
+using testing::scaled;
+
+constexpr double kCheckerPixel = 0.08;
+constexpr double kWallTol = 0.25;
+
+Pocket load(const std::string& name) {
+  return testing::load_test_pocket(name);
+}
+
+// Keep-tool-down links go over cleared floor at the link feed (the rapid rate by default),
+// and they are weighed against a retract as the output makes one (the descent at the plunge
+// feed included). The independent sweep checks that what runs at the link feed removes
+// nothing but crumbs of its own finer pixels (it may come within a hair of the material).
+TEST(AdaptivePocket, LinksOverClearedFloorRunAtTheLinkFeedAndCutNothing) {
+  const Pocket p = scaled(load("l_pocket_islands.json"), 0.6);
+  const Tool t = flat_mill(6.0);
+  AdaptiveParams ap = params_3mm_deep(0.6);
+  auto fast = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(fast.ok()) << fast.status().to_string();
+  std::vector<testing::SweepSample> samples;
+  const auto s = testing::sweep_check(p.region, 3.0, fast->toolpath, fast->target_engagement_deg,
+                                      kCheckerPixel, kWallTol, &samples);
+  const auto& mv = fast->toolpath.moves;
+  double link_len = 0.0, removed = 0.0, all = 0.0;
+  std::map<std::size_t, double> per_move;
+  for (const auto& q : samples) {
+    all += q.removed_mm2;
+    const Move& m = mv[q.move];
+    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
+    link_len += q.length_mm;
+    removed += q.removed_mm2;
+    per_move[q.move] += q.removed_mm2;
+  }
+  double most = 0.0;
+  for (const auto& [k, a] : per_move)
+    most = std::max(most, a);
+  std::printf(
+      "  links at %.0f mm/min: %.0f mm in %zu moves, removing %.3f mm^2 of %.0f (at most "
+      "%.3f mm^2 in one move)\n",
+      ap.rapid_mm_min, link_len, per_move.size(), removed, all, most);
+  EXPECT_GT(link_len, 100.0);
+  // Crumbs of the checker's finer pixels at most (one corner: 0.03 mm^2): under a quarter of
+  // what one step at the target removes (stepover x step = 0.18 mm^2).
+  EXPECT_LE(removed, 5e-4 * all);
+  EXPECT_LE(most, 0.25 * ap.stepover_mm * 0.3);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  // Links at the cutting feed instead: the path may retract more, and takes longer.
+  ap.link_feed_mm_min = ap.feed_mm_min;
+  auto slow = adaptive_pocket(p, t, ap);
+  ASSERT_TRUE(slow.ok());
+  const auto tf = compute_metrics(fast->toolpath), ts = compute_metrics(slow->toolpath);
+  std::printf("  machining %.0f s (links at the cutting feed: %.0f s), lifts %zu (%zu)\n",
+              tf.machining_time_s, ts.machining_time_s, tf.lift_offs, ts.lift_offs);
+  EXPECT_LT(tf.machining_time_s, 0.95 * ts.machining_time_s);
+  EXPECT_LE(tf.lift_offs, ts.lift_offs);
+}
+
+// A test pocket generated and swept, with what each move at the link feed removes (mm^2)
+// and how long it is (mm) by the sweep, per move index.
+struct LinkFeedCuts {
+  AdaptiveResult result;
+  testing::SweepReport sweep;
+  std::map<std::size_t, std::pair<double, double>> per_move;
+};
+
+LinkFeedCuts link_feed_cuts(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
+  LinkFeedCuts out;
+  auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
+  EXPECT_TRUE(r.ok()) << r.status().to_string();
+  if (!r.ok()) return out;
+  out.result = std::move(r.value());
+  std::vector<testing::SweepSample> samples;
+  out.sweep =
+      testing::sweep_check(p.region, 0.5 * tool_d, out.result.toolpath,
+                           out.result.target_engagement_deg, kCheckerPixel, kWallTol, &samples);
+  for (const auto& q : samples) {
+    const Move& m = out.result.toolpath.moves[q.move];
+    if (m.kind != MoveKind::kFeed || m.feed_mm_min != ap.rapid_mm_min) continue;
+    out.per_move[q.move].first += q.removed_mm2;
+    out.per_move[q.move].second += q.length_mm;
+  }
+  return out;
+}
+
+LinkFeedCuts link_feed_cuts(const std::string& file, double tool_d, const AdaptiveParams& ap) {
+  return link_feed_cuts(load(file), tool_d, ap);
+}
+
+// The most a move at the link feed removes per mm of its length (moves of 0.05 mm or more).
+double densest_link_feed_cut(const LinkFeedCuts& c) {
+  double densest = 0.0;
+  for (const auto& [k, v] : c.per_move)
+    if (v.second >= 0.05) densest = std::max(densest, v.first / v.second);
+  return densest;
+}
+
+// Pocket 951 of bench/pocket_random.sh (ø6 at 15 %, a pentagon with a square and a round
+// island): five sessions resumed where no straight link from the last cut kept off the
+// material and the islands, and each was a retract and a plunge (the raw path has no moves
+// to follow there). A way over the cleared floor, searched among the tool centres whose
+// disks are clear and pulled taut, keeps the tool down.
+TEST(AdaptivePocket, ResumesElsewhereGoOverTheClearedFloorInsteadOfLifting) {
+  const AdaptiveParams ap = params_3mm_deep(0.9);
+  const LinkFeedCuts c = link_feed_cuts("random_seed951.json", 6.0, ap);
+  const auto& s = c.sweep;
+  // What runs at the link feed: crumbs of the sweep's finer pixels at most, as in the test
+  // above. Two tip visits here ended in a 0.1 mm move at the link feed that took 0.19 and
+  // 0.35 mm^2 by the sweep, the pixel model counting none of the material beyond the free
+  // pixel centres; the re-simulation counts what the visits reach now.
+  double most = 0.0;
+  for (const auto& [k, v] : c.per_move)
+    most = std::max(most, v.first);
+  const auto mt = compute_metrics(c.result.toolpath);
+  std::printf("  lifts %zu, at most %.3f mm^2 in one link, machining %.0f s, within20 %.1f %%\n",
+              mt.lift_offs, most, mt.machining_time_s, 100 * s.within_20pct);
+  EXPECT_EQ(mt.lift_offs, 0U);  // 5 before
+  EXPECT_LE(most, 0.25 * ap.stepover_mm * 0.3);
+  EXPECT_LE(s.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.residual_mm2, 0.5);
+  EXPECT_EQ(s.slot_length_mm, 0.0);
+  EXPECT_GE(s.within_20pct, 0.90);
+}
+
+// Pocket 977 of bench/pocket_random.sh (ø3 at 8 %, a polygon with two islands): the search
+// for a way over the cleared floor ran on tool centres a sixth of the radius apart, and
+// three resumes found none where the clear centres between the islands formed strips
+// narrower than that; each lifted for a hop of a few millimetres. Where the coarse search
+// finds nothing a finer one (a third of the stride) runs.
+TEST(AdaptivePocket, ResumesFindWaysThroughPassagesNarrowerThanTheSearchStride) {
+  const AdaptiveParams ap = params_3mm_deep(0.24);
+  const LinkFeedCuts c = link_feed_cuts("random_seed977.json", 3.0, ap);
+  const auto mt = compute_metrics(c.result.toolpath);
+  std::printf("  lifts %zu, machining %.0f s\n", mt.lift_offs, mt.machining_time_s);
+  EXPECT_LE(mt.lift_offs, 2U);  // 5 before
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(c.sweep.residual_mm2, 0.5);
+  // The new links go over cleared floor: the most a link-feed move removes is a few of
+  // the checker's pixels.
+  double most = 0.0;
+  for (const auto& [k, v] : c.per_move)
+    most = std::max(most, v.first);
+  EXPECT_LE(most, 4.0 * kCheckerPixel * kCheckerPixel);
+}
+
+// Pocket 955 of bench/pocket_random.sh (ø16 at 10 %, an L with four islands). A move runs at
+// the link feed when the re-simulation finds it removing at most 1/25 of a target step (at
+// 5x the feed, the chip of a target cut); that allowance is per full step, and short moves
+// of a tip visit (0.1 mm) took a pixel or two each at the link feed: 0.57 mm of radial depth
+// by the sweep against the 0.064 mm allowed. A shorter move gets its share of the allowance.
+// Checked per move by the sweep, removal per mm of path, crumbs of its pixels allowed.
+TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
+  const AdaptiveParams ap = params_3mm_deep(1.6);
+  const LinkFeedCuts c = link_feed_cuts("random_seed955.json", 16.0, ap);
+  const double densest = densest_link_feed_cut(c);
+  std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
+  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+}
+
+// A rectangle whose corners are rounded 0.2 mm wider than the tool's radius (as a part's
+// drawing rounds them for a cutter a size up): the tool centres' region ends in arcs of
+// 0.2 mm radius, 12 vertices of 7.5 degrees each, which no single vertex shows as a tip, and
+// the free pixel centres stop about half a millimetre short of them. The tool must reach
+// each corner (else a crescent of a few mm^2 stays), and at the cutting feed: a scallop dab
+// into such a corner took 1.8 mm^2 in a 0.7 mm move at the link feed (part-like pocket
+// 2312), the re-simulation counting none of the material beyond the free centres.
+TEST(AdaptivePocket, CornersRoundedALittleWiderThanTheToolAreReachedAtTheCuttingFeed) {
+  const double width = 120.0, height = 55.0, radius = 10.0, rc = radius + 0.2;
+  Ring outer;
+  const Vec2 centres[4] = {
+      {width - rc, rc}, {width - rc, height - rc}, {rc, height - rc}, {rc, rc}};
+  for (int c = 0; c < 4; ++c) {
+    for (int k = 0; k <= 12; ++k) {
+      const double a = deg_to_rad(-90.0 + 90.0 * c + 7.5 * k);
+      outer.push_back(centres[c] + Vec2{std::cos(a), std::sin(a)} * rc);
+    }
+  }
+  const Pocket p = make_pocket(outer, {}, "rounded rectangle").value();
+  const AdaptiveParams ap = params_3mm_deep(8.0);
+  const LinkFeedCuts c = link_feed_cuts(p, 2.0 * radius, ap);
+  // How near the tool centre comes to each corner's apex (the offset arc's middle).
+  double farthest = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const double a = deg_to_rad(-45.0 + 90.0 * k);
+    const Vec2 apex = centres[k] + Vec2{std::cos(a), std::sin(a)} * (rc - radius);
+    double nearest = 1e9;
+    for (const Move& m : c.result.toolpath.moves) {
+      nearest = std::min(nearest, distance(m.end.xy(), apex));
+    }
+    farthest = std::max(farthest, nearest);
+  }
+  const double densest = densest_link_feed_cut(c);
+  std::printf("  corners reached within %.3f mm, densest link-feed move %.3f mm\n", farthest,
+              densest);
+  EXPECT_LE(farthest, 0.05);
+  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(c.sweep.residual_mm2, 0.1);
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+}
+
+// Pocket 3057 of bench/pocket_random.sh (ø20 at 40 %, a rounded outline with two bosses
+// drawn across its wall): a tip visit at the top wall ended in a 0.08 mm move, shorter than
+// the model's 0.25 mm pixel, that reached 0.055 mm past the cut before it. Its removal read
+// as no pixel, so it ran at the link feed; the sweep found 0.45 mm^2 in it (5.6 mm of radial
+// depth per mm of path, against the 8 / 25 mm a link-feed move may graze). Moves shorter than
+// a pixel now run at the cutting feed.
+TEST(AdaptivePocket, MovesShorterThanAPixelRunAtTheCuttingFeed) {
+  const AdaptiveParams ap = params_3mm_deep(8.0);
+  const LinkFeedCuts c = link_feed_cuts("random_seed3057.json", 20.0, ap);
+  const double densest = densest_link_feed_cut(c);
+  std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
+  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 5.0 * kCheckerPixel);
+  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(c.sweep.residual_mm2, 0.5);
+}
+
+}  // namespace
+}  // namespace swarf
