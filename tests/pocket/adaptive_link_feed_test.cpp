@@ -170,13 +170,21 @@ TEST(AdaptivePocket, ResumesFindWaysThroughPassagesNarrowerThanTheSearchStride) 
 // of a tip visit (0.1 mm) took a pixel or two each at the link feed: 0.57 mm of radial depth
 // by the sweep against the 0.064 mm allowed. A shorter move gets its share of the allowance.
 // Checked per move by the sweep, removal per mm of path, crumbs of its pixels allowed.
-TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
-  const AdaptiveParams ap = params_3mm_deep(1.6);
-  const LinkFeedCuts c = link_feed_cuts("random_seed955.json", 16.0, ap);
+// A random test pocket's densest link-feed move by the sweep: within the graze allowed (a
+// 25th of the stepover as radial depth) plus `crumb_px` of the checker's pixels; no gouge.
+LinkFeedCuts expect_link_feed_grazes(const std::string& file, double tool_d, double stepover_mm,
+                                     double crumb_px) {
+  const AdaptiveParams ap = params_3mm_deep(stepover_mm);
+  LinkFeedCuts c = link_feed_cuts(file, tool_d, ap);
   const double densest = densest_link_feed_cut(c);
   std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
-  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 2.0 * kCheckerPixel);
+  EXPECT_LE(densest, stepover_mm / 25.0 + crumb_px * kCheckerPixel);
   EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+  return c;
+}
+
+TEST(AdaptivePocket, ShortMovesAtTheLinkFeedGrazeNoMoreThanTheirShare) {
+  expect_link_feed_grazes("random_seed955.json", 16.0, 1.6, 2.0);
 }
 
 // A rectangle whose corners are rounded 0.2 mm wider than the tool's radius (as a part's
@@ -227,12 +235,7 @@ TEST(AdaptivePocket, CornersRoundedALittleWiderThanTheToolAreReachedAtTheCutting
 // depth per mm of path, against the 8 / 25 mm a link-feed move may graze). Moves shorter than
 // a pixel now run at the cutting feed.
 TEST(AdaptivePocket, MovesShorterThanAPixelRunAtTheCuttingFeed) {
-  const AdaptiveParams ap = params_3mm_deep(8.0);
-  const LinkFeedCuts c = link_feed_cuts("random_seed3057.json", 20.0, ap);
-  const double densest = densest_link_feed_cut(c);
-  std::printf("  densest link-feed move: %.3f mm of radial depth\n", densest);
-  EXPECT_LE(densest, ap.stepover_mm / 25.0 + 5.0 * kCheckerPixel);
-  EXPECT_LE(c.sweep.max_gouge_mm, 1e-6);
+  const LinkFeedCuts c = expect_link_feed_grazes("random_seed3057.json", 20.0, 8.0, 5.0);
   EXPECT_LE(c.sweep.residual_mm2, 0.5);
 }
 
