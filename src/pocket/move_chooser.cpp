@@ -391,11 +391,12 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       const int j1 = std::min(img.height() - 1, static_cast<int>(std::floor(cp.y + rp)));
       const int i0 = std::max(0, static_cast<int>(std::ceil(cp.x - rp)));
       const int i1 = std::min(img.width() - 1, static_cast<int>(std::floor(cp.x + rp)));
-      for (int j = j0; j <= j1; ++j)
+      for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
           if (!img.get(i, j) || norm_sq(Vec2{i - cp.x, j - cp.y}) > rp * rp) continue;
           if (m.walls.distance(m.grid.to_world(i, j)) > crumb) return false;
         }
+      }
       return true;
     };
     for (int ring_k = 0; ring_k < rings; ++ring_k) {
