@@ -31,18 +31,6 @@ double clearance_at(const Model& m, Vec2 p) {
   return clearance_mm(m, i, j) - 0.71 * m.h;
 }
 
-// Calls fn(i, j) for the pixels whose centres lie within r of c.
-template <class Fn>
-void for_disk(const Grid& grid, Vec2 c, double r, Fn&& fn) {
-  const Vec2 q = grid.to_px(c);
-  const double rp = r / grid.h;
-  for (int j = std::max(0, static_cast<int>(std::floor(q.y - rp)));
-       j <= std::min(grid.height - 1, static_cast<int>(std::ceil(q.y + rp))); ++j)
-    for (int i = std::max(0, static_cast<int>(std::floor(q.x - rp)));
-         i <= std::min(grid.width - 1, static_cast<int>(std::ceil(q.x + rp))); ++i)
-      if (norm_sq(Vec2{i - q.x, j - q.y}) <= rp * rp) fn(i, j);
-}
-
 void add_disk(const Grid& grid, Vec2 c, double r, BitImage& img) {
   for_disk(grid, c, r, [&](int i, int j) { img.set(i, j, true); });
 }

@@ -384,20 +384,12 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       constexpr int kMostCrumbPx = 24;
       if (stock.material_in_disk(c, rr, kMostCrumbPx) > kMostCrumbPx) return false;
       const double crumb = m.wall_stock_mm + std::max(kWallCrumbMm, 2.0 * m.h);
-      const Vec2 cp = m.grid.to_px(c);
-      const double rp = rr / m.h;
       const BitImage& img = stock.material();
-      const int j0 = std::max(0, static_cast<int>(std::ceil(cp.y - rp)));
-      const int j1 = std::min(img.height() - 1, static_cast<int>(std::floor(cp.y + rp)));
-      const int i0 = std::max(0, static_cast<int>(std::ceil(cp.x - rp)));
-      const int i1 = std::min(img.width() - 1, static_cast<int>(std::floor(cp.x + rp)));
-      for (int j = j0; j <= j1; ++j) {
-        for (int i = i0; i <= i1; ++i) {
-          if (!img.get(i, j) || norm_sq(Vec2{i - cp.x, j - cp.y}) > rp * rp) continue;
-          if (m.walls.distance(m.grid.to_world(i, j)) > crumb) return false;
-        }
-      }
-      return true;
+      bool crumbs = true;
+      for_disk(m.grid, c, rr, [&](int i, int j) {
+        crumbs = crumbs && (!img.get(i, j) || m.walls.distance(m.grid.to_world(i, j)) <= crumb);
+      });
+      return crumbs;
     };
     for (int ring_k = 0; ring_k < rings; ++ring_k) {
       const double ring = m.radius_mm + 0.5 * (1 + ring_k) * m.step_mm;

@@ -6,6 +6,7 @@
 // blocks that hold nothing are skipped (block_occupancy).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -31,6 +32,20 @@ struct Grid {
   /// A grid with pixel size h covering box grown by margin on every side.
   static Grid covering(const Box2& box, double h, double margin);
 };
+
+/// Calls fn(i, j) for the pixels of the grid whose centres lie within r of c.
+template <class Fn>
+void for_disk(const Grid& grid, Vec2 c, double r, Fn&& fn) {
+  const Vec2 q = grid.to_px(c);
+  const double rp = r / grid.h;
+  for (int j = std::max(0, static_cast<int>(std::floor(q.y - rp)));
+       j <= std::min(grid.height - 1, static_cast<int>(std::ceil(q.y + rp))); ++j) {
+    for (int i = std::max(0, static_cast<int>(std::floor(q.x - rp)));
+         i <= std::min(grid.width - 1, static_cast<int>(std::ceil(q.x + rp))); ++i) {
+      if (norm_sq(Vec2{i - q.x, j - q.y}) <= rp * rp) fn(i, j);
+    }
+  }
+}
 
 class BitImage {
  public:
