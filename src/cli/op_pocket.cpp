@@ -104,7 +104,7 @@ Result<OperationOutput> run(const OperationInput& in) {
     std::snprintf(text, sizeof text,
                   "%.1f mm of necks as wide as the tool plunged through in %d crescent plunges "
                   "a layer rather than slotted (--no-straight-plunge slots them)",
-                  r->neck_length_mm, r->neck_plunges);
+                  s.plunged_length_mm, r->neck_plunges);
     out.notes.push_back(text);
   }
   // The adaptive pocket plans a flat end at the floor. A ball or bull-nose end mill cuts the

@@ -457,7 +457,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     }
     neck_holes[i] = pocket::neck_plunge_points(way, 0.5 * m.radius_mm);
     res.neck_plunges += static_cast<int>(neck_holes[i].size());
-    res.neck_length_mm += necks[i].length_mm;
     for (std::size_t s = keep[necks[i].first - 1]; s < keep[necks[i].last]; ++s)
       res.steps[s].plunged = true;
   }

@@ -134,9 +134,9 @@ struct AdaptiveResult {
   /// counting their repeats on lower layers.
   int straight_plunges = 0;
   /// Necks barely wider than the tool, where every way through is a full slot, plunged
-  /// through instead (AdaptiveParams::straight_plunge): plunges and path length per layer.
+  /// through instead (AdaptiveParams::straight_plunge): plunges per layer (their path's
+  /// steps are AdaptiveStep::plunged; their length is AdaptiveSummary::plunged_length_mm).
   int neck_plunges = 0;
-  double neck_length_mm = 0.0;
   double gouge_steps = 0;  ///< steps whose disk reaches past a wall (exact geometry; 0 expected)
 };
 
