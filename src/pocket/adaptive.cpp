@@ -141,6 +141,9 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
     rec.tag = static_cast<std::uint32_t>(2 + res.steps.size() + 1);
     int removed = 0;
     if (lp.jump[k] && lp.entry[k] >= 0) {
+      // A later entry's hole is an entry's in the picture too, not a cut of no engagement
+      // (its step removes nothing by its own count; it showed blue before).
+      rec.tag = 2u;
       pocket::cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])], record, &rec);
     } else if (lp.jump[k]) {
       removed = stock.stamp(b, record, &rec);

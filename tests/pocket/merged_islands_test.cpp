@@ -123,6 +123,26 @@ TEST(MergedIslands, BothSidesOfARibAcrossThePocketAreCleared) {
   expect_cleared(rect(0, 0, 50, 40), {rect(20, -5, 30, 45)}, sides, 8 * 0.1);
 }
 
+// Each area's entry hole is an entry's in the report's cut map (2), as the first area's: the
+// later one's showed as a cut of no engagement (blue in the picture).
+TEST(MergedIslands, EachAreasEntryHoleIsAnEntryInTheCutMap) {
+  auto p = make_pocket(rect(0, 0, 50, 40), {rect(20, -5, 30, 45)}, "rib.json");
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  auto r = adaptive_pocket(*p, testing::flat_mill(6.0), testing::params_3mm_deep(1.0));
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  const CutMap& map = r->cut_map;
+  int left = 0, right = 0;  // entry cells either side of the rib
+  for (int j = 0; j < map.height; ++j)
+    for (int i = 0; i < map.width; ++i) {
+      if (map.cells[static_cast<std::size_t>(j) * map.width + i] != 2u) continue;
+      (map.origin.x + i * map.pixel_mm < 25.0 ? left : right) += 1;
+    }
+  // Each hole is at least the tool's disk: 28 mm^2.
+  const double disk_px = 3.14159 * 3.0 * 3.0 / (map.pixel_mm * map.pixel_mm);
+  EXPECT_GT(left, disk_px);
+  EXPECT_GT(right, disk_px);
+}
+
 TEST(MergedIslands, OverlappingIslandsAreCutRoundAsOne) {
   // The union of the two squares, clockwise: an island.
   const Ring both = {{10, 10}, {10, 25}, {20, 25}, {20, 30},

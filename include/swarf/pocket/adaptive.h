@@ -97,7 +97,8 @@ struct AdaptiveStep {
 };
 
 /// The simulation bitmap after the final path, for the report picture: per pixel 0 =
-/// outside the pocket, 1 = material left, 2 + k = cut by step k.
+/// outside the pocket, 1 = material left, 2 = cut by an entry (the first or a later one),
+/// 3 + k = cut by step k.
 struct CutMap {
   Vec2 origin;
   double pixel_mm = 0.0;
