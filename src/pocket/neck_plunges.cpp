@@ -37,10 +37,19 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   auto walled = [&](Vec2 p, Vec2 n) {
     return !m.walls.inside(p + n * reach) && !m.walls.inside(p - n * reach);
   };
+  // Walled over at least half the move's length, sampled every half millimetre: a move
+  // that runs into a channel from its mouth is tight over the part in it (random pocket
+  // 1130: a ø12 cut 7.4 mm of full slot by the sweep along a boundary move that began 0.75
+  // mm before two islands 12.07 mm apart, where one of them was not yet beside it; the
+  // move's ends and middle had to be walled before).
   auto tight = [&](std::size_t q) {
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
     const Vec2 d = normalized(b - a), n{-d.y, d.x};
-    return walled(a, n) && walled((a + b) * 0.5, n) && walled(b, n);
+    const int samples = std::max(2, static_cast<int>(std::ceil(distance(a, b) / 0.5)) + 1);
+    int in = 0;
+    for (int k = 0; k < samples; ++k)
+      in += walled(a + (b - a) * (static_cast<double>(k) / (samples - 1)), n) ? 1 : 0;
+    return 2 * in >= samples;
   };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;

@@ -173,6 +173,25 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
   EXPECT_TRUE(runs(15.0, axis, 20, 130.0).empty());   // the same cut in a chamber
   EXPECT_EQ(runs(15.0, axis, 20, 165.0).size(), 1u);  // a full slot anywhere
   EXPECT_EQ(runs(15.0, axis, 1, 165.0).size(), 1u);   // however short, from 0.2 mm
+  // One long move from before the neck's mouth into it (random pocket 1130: a boundary move
+  // began 0.75 mm before a channel and ran 7.7 mm in it, 7.4 mm of slot by the sweep): the
+  // neck when the walls close in on it over at least half its length, whichever end.
+  auto one_move = [&](Vec2 a, Vec2 b, double deg) {
+    pocket::LinkedPath lp;
+    lp.pts = {a, b};
+    lp.kind = {StepKind::kBoundary};
+    lp.jump = {false};
+    lp.entry = {-1};
+    std::vector<pocket::KeptMove> kept(2);
+    kept[1].len = distance(a, b);
+    kept[1].deg = deg;
+    kept[1].link = false;
+    kept[1].fast = false;
+    return pocket::neck_runs(*m, lp, {0, 1}, kept);
+  };
+  EXPECT_EQ(one_move({46.0, axis}, {58.0, axis}, 130.0).size(), 1u);  // 8 mm of 12 in it
+  EXPECT_EQ(one_move({74.0, axis}, {62.0, axis}, 130.0).size(), 1u);  // out at the far end
+  EXPECT_TRUE(one_move({40.0, axis}, {52.0, axis}, 130.0).empty());   // 2 mm of 12
 }
 
 }  // namespace
