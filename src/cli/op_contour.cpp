@@ -25,7 +25,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   cp.top_z_mm = p.at("top_z").get<double>();
   cp.clearance_z_mm = p.at("clearance_z").get<double>();
   cp.feed_mm_min = p.at("feed").get<double>();
-  cp.plunge_feed_mm_min = p.at("plunge_feed").get<double>();
+  cp.ramp_feed_mm_min = p.at("ramp_feed").get<double>();
   cp.ramp_angle_deg = p.at("ramp_angle").get<double>();
   auto r = contour_parallel_pocket(*pocket, *in.tool, cp, in.ctx ? *in.ctx : default_context());
   if (!r) return r.status();
@@ -47,7 +47,7 @@ const OperationRegistrar kRegistrar(Operation{
                          "radial stepover between rings, mm (0 = 10 % of the diameter)"),
             Param{"outside_in", ParamType::kBool, false, "cut from the wall inwards", false},
         },
-        "helix", {}),
+        "helix and ramp", {}),
     run});
 
 }  // namespace

@@ -57,6 +57,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.clearance_z_mm = num(p, "clearance_z");
   ap.feed_mm_min = num(p, "feed");
   ap.plunge_feed_mm_min = num(p, "plunge_feed");
+  ap.ramp_feed_mm_min = num(p, "ramp_feed");
   ap.link_feed_mm_min = num(p, "link_feed");
   ap.ramp_angle_deg = num(p, "ramp_angle");
   ap.helix_radius_mm = num(p, "helix_radius");
@@ -169,6 +170,9 @@ const OperationRegistrar kRegistrar(Operation{
         {
             number_param("helix_radius", 0.0,
                          "helix radius, mm (0 = 0.3 x diameter, or what fits)"),
+            number_param("plunge_feed", 300.0,
+                         "feed of straight plunges (necks, entries with no room for a helix "
+                         "or ramp) and of descents through a cut hole, mm/min"),
             Param{"plunge_candidates", ParamType::kInteger, 1,
                   "plunge points tried along the medial axis (the fastest path wins)", false},
             Param{"straight_plunge", ParamType::kBool, true,

@@ -9,7 +9,7 @@
 
 namespace swarf::cli {
 
-/// `entry` names the plunge moves in the help ("helix", "helix and ramp").
+/// `entry` names the entry moves in the help ("helix", "helix and ramp").
 inline std::vector<Param> pocket_layer_params(const std::string& entry) {
   return {
       Param{"conventional", ParamType::kBool, false, "conventional instead of climb milling",
@@ -21,7 +21,7 @@ inline std::vector<Param> pocket_layer_params(const std::string& entry) {
       number_param("top_z", 0.0, "top of the stock, mm"),
       number_param("clearance_z", 5.0, "rapid plane, mm"),
       number_param("feed", 1000.0, "cutting feed, mm/min"),
-      number_param("plunge_feed", 300.0, entry + " feed, mm/min"),
+      number_param("ramp_feed", 0.0, entry + " feed along the path, mm/min (0 = the cutting feed)"),
       number_param("ramp_angle", 3.0, entry + " descent angle, degrees"),
   };
 }

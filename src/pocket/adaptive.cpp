@@ -51,6 +51,8 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
   if (p.wall_stock_mm < 0.0) return bad("wall_stock_mm must not be negative");
   if (!(p.link_feed_mm_min >= 0.0))
     return bad("link_feed_mm_min must be >= 0 (0 = the rapid rate)");
+  if (!(p.ramp_feed_mm_min >= 0.0))
+    return bad("ramp_feed_mm_min must be >= 0 (0 = the cutting feed)");
   if (!(p.feed_mm_min > 0.0 && p.plunge_feed_mm_min > 0.0 && p.rapid_mm_min > 0.0))
     return bad("feeds must be positive mm/min");
   if (!(p.ramp_angle_deg > 0.0 && p.ramp_angle_deg <= 45.0))
@@ -220,6 +222,7 @@ double path_time_s(const LinkedPath& lp, const pocket::LinkCosts& c) {
 void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z_from,
                  double z_clear, double z_to) {
   const double tan_a = std::tan(deg_to_rad(p.ramp_angle_deg));
+  const double ramp_feed = p.ramp_feed_mm_min > 0.0 ? p.ramp_feed_mm_min : p.feed_mm_min;
   auto down_through_the_cut = [&](Vec2 at) {
     if (z_clear < z_from - 1e-9) {
       tp.moves.push_back(
@@ -247,7 +250,7 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
       z = std::max(z_to, z - half_drop);
       at_start = !at_start;
       const Vec2 to = at_start ? s : e.centre * 2.0 - s;
-      Move mv = make_move(MoveKind::kHelix, to_vec3(to, z), p.plunge_feed_mm_min, true);
+      Move mv = make_move(MoveKind::kHelix, to_vec3(to, z), ramp_feed, true);
       mv.center = to_vec3(e.centre, z);
       mv.clockwise = !p.climb;
       tp.moves.push_back(mv);
@@ -256,7 +259,7 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
     for (int k = 0; k < 2; ++k) {
       at_start = !at_start;
       const Vec2 to = at_start ? s : e.centre * 2.0 - s;
-      Move mv = make_move(MoveKind::kArc, to_vec3(to, z_to), p.plunge_feed_mm_min, true);
+      Move mv = make_move(MoveKind::kArc, to_vec3(to, z_to), ramp_feed, true);
       mv.center = to_vec3(e.centre, z_to);
       mv.clockwise = !p.climb;
       tp.moves.push_back(mv);
@@ -281,11 +284,10 @@ void entry_moves(Toolpath& tp, const Entry& e, const AdaptiveParams& p, double z
   legs += legs % 2;
   for (int k = 1; k <= legs; ++k) {
     const double z = k == legs ? z_to : z_from - drop * k / legs;
-    tp.moves.push_back(make_move(MoveKind::kRamp, to_vec3(k % 2 == 0 ? e.ramp_a : e.ramp_b, z),
-                                 p.plunge_feed_mm_min, true));
+    tp.moves.push_back(
+        make_move(MoveKind::kRamp, to_vec3(k % 2 == 0 ? e.ramp_a : e.ramp_b, z), ramp_feed, true));
   }
-  tp.moves.push_back(
-      make_move(MoveKind::kRamp, to_vec3(e.ramp_b, z_to), p.plunge_feed_mm_min, true));
+  tp.moves.push_back(make_move(MoveKind::kRamp, to_vec3(e.ramp_b, z_to), ramp_feed, true));
 }
 
 }  // namespace

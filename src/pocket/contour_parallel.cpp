@@ -23,8 +23,9 @@ Status validate(const ContourParallelParams& p, const Tool& tool) {
   if (p.floor_stock_mm < 0.0 || p.floor_stock_mm >= p.depth_mm)
     return bad_parameter("floor_stock_mm must be in [0, depth_mm)");
   if (p.wall_stock_mm < 0.0) return bad_parameter("wall_stock_mm must not be negative");
-  if (!(p.feed_mm_min > 0.0 && p.plunge_feed_mm_min > 0.0))
-    return bad_parameter("feeds must be positive mm/min");
+  if (!(p.feed_mm_min > 0.0)) return bad_parameter("feeds must be positive mm/min");
+  if (!(p.ramp_feed_mm_min >= 0.0))
+    return bad_parameter("ramp_feed_mm_min must be >= 0 (0 = the cutting feed)");
   if (!(p.ramp_angle_deg > 0.0 && p.ramp_angle_deg <= 45.0))
     return bad_parameter("ramp_angle_deg must be in (0, 45] degrees");
   if (p.clearance_z_mm <= p.top_z_mm) return bad_parameter("clearance_z_mm must be above top_z_mm");
@@ -120,6 +121,7 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
   const int layers = std::max(1, static_cast<int>(std::ceil(total / sd - 1e-9)));
   res.rings = static_cast<int>(loops.size());
   const double tan_a = std::tan(deg_to_rad(p.ramp_angle_deg));
+  const double ramp_feed = p.ramp_feed_mm_min > 0.0 ? p.ramp_feed_mm_min : p.feed_mm_min;
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : p.top_z_mm - sd * layer;
@@ -162,12 +164,12 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
           const double per_turn = 2 * kPi * hr * tan_a;
           while (zz > z + 1e-9) {
             zz = std::max(z, zz - 0.5 * per_turn);
-            tp.arc_to(to_vec3(centre * 2.0 - h0, zz), centre, !p.climb, p.plunge_feed_mm_min);
+            tp.arc_to(to_vec3(centre * 2.0 - h0, zz), centre, !p.climb, ramp_feed);
             zz = std::max(z, zz - 0.5 * per_turn);
-            tp.arc_to(to_vec3(h0, zz), centre, !p.climb, p.plunge_feed_mm_min);
+            tp.arc_to(to_vec3(h0, zz), centre, !p.climb, ramp_feed);
           }
-          tp.arc_to(to_vec3(centre * 2.0 - h0, z), centre, !p.climb, p.plunge_feed_mm_min);
-          tp.arc_to(to_vec3(h0, z), centre, !p.climb, p.plunge_feed_mm_min);
+          tp.arc_to(to_vec3(centre * 2.0 - h0, z), centre, !p.climb, ramp_feed);
+          tp.arc_to(to_vec3(h0, z), centre, !p.climb, ramp_feed);
           tp.feed_to(to_vec3(start, z), p.feed_mm_min, true);
           Ring disk;
           for (int k = 0; k < 32; ++k)
@@ -182,7 +184,7 @@ Result<ContourParallelResult> contour_parallel_pocket(const Pocket& pocket, cons
           for (int guard = 0; zz > z + 1e-9 && guard < 1000000; ++guard) {
             const Vec2 a = ring[k % ring.size()], b = ring[(k + 1) % ring.size()];
             zz = std::max(z, zz - distance(a, b) * tan_a);
-            tp.ramp_to(to_vec3(b, zz), p.plunge_feed_mm_min);
+            tp.ramp_to(to_vec3(b, zz), ramp_feed);
             ++k;
           }
           // Back to the start along the ring at depth (the ramp left material above).

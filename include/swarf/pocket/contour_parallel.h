@@ -22,8 +22,8 @@ struct ContourParallelParams {
   double top_z_mm = 0.0;
   double clearance_z_mm = 5.0;
   double feed_mm_min = 1000.0;
-  double plunge_feed_mm_min = 300.0;
-  double ramp_angle_deg = 3.0;      ///< helix descent angle
+  double ramp_feed_mm_min = 0.0;    ///< helix and ramp feed along the path; 0 = feed_mm_min
+  double ramp_angle_deg = 3.0;      ///< helix and ramp descent angle
   double arc_tolerance_mm = 0.005;  ///< of the offset rings' round joins
 };
 
