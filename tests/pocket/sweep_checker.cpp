@@ -57,6 +57,11 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
   // circles round a helix's axis, or the pass back along a ramp's last leg (its wedge).
   // Any other floor move, arcs of a fitted path included, is cutting.
   enum class Closing { kNone, kHelix, kRamp } closing = Closing::kNone;
+  // Points read back from G-code are rounded to its words (4 decimals): an arc's centre is
+  // its start plus I and J, each rounded, so the same axis reads up to 2e-4 mm apart from
+  // one arc to the next (random pocket 2419, ø3: a helix's closing circle 1e-4 off its
+  // axis counted as 0.8 mm of full slot).
+  constexpr double kSamePointMm = 1e-3;
   Vec3 descent_from{}, helix_axis{};
   for (std::size_t mi = 0; mi < tp.moves.size(); ++mi) {
     const Move& m = tp.moves[mi];
@@ -77,10 +82,10 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
       helix_axis = m.center;
       continue;
     }
-    const bool entry =
-        (closing == Closing::kHelix && m.is_arc() &&
-         norm(m.center.xy() - helix_axis.xy()) < 1e-6) ||
-        (closing == Closing::kRamp && !m.is_arc() && norm(m.end.xy() - descent_from.xy()) < 1e-6);
+    const bool entry = (closing == Closing::kHelix && m.is_arc() &&
+                        norm(m.center.xy() - helix_axis.xy()) < kSamePointMm) ||
+                       (closing == Closing::kRamp && !m.is_arc() &&
+                        norm(m.end.xy() - descent_from.xy()) < kSamePointMm);
     if (!entry) closing = Closing::kNone;
     if (m.is_arc()) {
       const Vec2 c = m.center.xy();

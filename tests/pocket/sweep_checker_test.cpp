@@ -71,6 +71,13 @@ TEST(SweepChecker, TheEntrysClosingPassIsEntryAndWhatFollowsIsCutting) {
   // The first 2 mm of the arc lie in the helix's hole (7 mm round its axis).
   EXPECT_NEAR(h.cutting_length_mm, 10.0 * kPi - 2.0, 0.5);
   EXPECT_GT(h.max_engagement_deg, 120.0);
+  // The same read back from G-code, whose words are rounded to 4 decimals: the closing
+  // circle's centre (its start plus I, J) 1e-4 off the helix's axis is still its axis.
+  helix.moves[3].center.x += 1e-4;
+  helix.moves[4].center.x += 1e-4;
+  const auto g = testing::sweep_check(box, 5.0, helix, 60.0, 0.05, 0.0);
+  EXPECT_NEAR(g.cutting_length_mm, h.cutting_length_mm, 1e-9);
+  EXPECT_EQ(g.slot_length_mm, h.slot_length_mm);
 }
 
 }  // namespace
