@@ -239,5 +239,17 @@ TEST(AdaptivePocket, MovesShorterThanAPixelRunAtTheCuttingFeed) {
   EXPECT_LE(c.sweep.residual_mm2, 0.5);
 }
 
+// Pocket 2445 of bench/pocket_random.sh (ø20 at 40 %, a rounded rectangle with three
+// bosses, 0.25 mm pixels): links ran at the link feed right up to the cut that followed
+// them and from the cut before them, and the model's material edge lies up to a pixel off
+// the true one, so the last 0.5 mm of one link took 0.6 mm^2 by the sweep (1.2 mm of radial
+// depth at five times the feed) and the first 0.45 mm of another 0.19 mm^2. Within two
+// pixels of a cut, links now run at the cutting feed. (What is left at the link feed here is
+// a scallop dab's 0.75 mm into a wall: 0.42 mm.)
+TEST(AdaptivePocket, LinksRunAtTheCuttingFeedWithinTwoPixelsOfACut) {
+  const LinkFeedCuts c = expect_link_feed_grazes("random_seed2445.json", 20.0, 8.0, 3.0);
+  EXPECT_LE(c.sweep.residual_mm2, 0.5);
+}
+
 }  // namespace
 }  // namespace swarf
