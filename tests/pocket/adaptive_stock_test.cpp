@@ -196,13 +196,14 @@ TEST(AdaptivePocketStock, ScallopsLeftOnTheWallsAtAHighStepoverAreTakenOff) {
   // Each dab is a visit from the last pass near its scallop, there and back: no lift is
   // added, and the 26 dabs cost 3.2 s here (the bench's sweep at 6 mm deep: 110 -> 112 s;
   // a tour of them after the path's end, 114 s and 265 mm more of links). Since session 23
-  // the links' last and first two pixels next to each dab's cut run at the cutting feed
-  // (LinksRunAtTheCuttingFeedWithinTwoPixelsOfACut): 5.3 s.
+  // the dabs' cuts run at the cutting feed whatever the re-simulation reads
+  // (ScallopDabsAndRidesRunAtTheCuttingFeed), and so do the links' last and first two
+  // pixels next to them (LinksRunAtTheCuttingFeedWithinTwoPixelsOfACut): 6.4 s.
   const ToolpathMetrics mr = compute_metrics(r.toolpath), mn = compute_metrics(none.toolpath);
   std::printf("  machining %.1f s (without %.1f s), lifts %zu (%zu)\n", mr.machining_time_s,
               mn.machining_time_s, mr.lift_offs, mn.lift_offs);
   EXPECT_EQ(mr.lift_offs, mn.lift_offs);
-  EXPECT_LE(mr.machining_time_s, mn.machining_time_s + 6.0);
+  EXPECT_LE(mr.machining_time_s, mn.machining_time_s + 7.5);
 }
 
 // Where the scallops stay below wall_scallop_mm (ø8 at 10 %: R - sqrt(R^2 - (ae / 2)^2) =
