@@ -496,10 +496,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     k.deg = angle_of(m, static_cast<int>(k.px), k.len);
   }
   // The scallop rides' and dabs' cuts run at the cutting feed: they take wall slivers a
-  // pixel or two thick, which the pixels read as less than they are (random pocket 3057, ø20
-  // with 0.25 mm pixels: a ride took 2.8 mm^2 over 7 mm at the link feed by the sweep;
-  // part-like pockets 2409, 2422, 2444: dabs 0.41-0.47 mm of radial depth, against the
-  // 0.24 mm a link-feed move may graze).
+  // pixel or two thick, which the pixels read as less than they are (part-like pockets
+  // 2409, 2422, 2444, ø16-ø20 with 0.2-0.25 mm pixels: dabs took 0.41-0.47 mm of radial
+  // depth at the link feed by the sweep, against the 0.24-0.26 mm a link-feed move may
+  // graze).
   if (!lp.scallop_cuts.empty()) {
     auto before = [](Vec2 u, Vec2 v) { return u.x < v.x || (u.x == v.x && u.y < v.y); };
     std::vector<Vec2> cuts = lp.scallop_cuts;
