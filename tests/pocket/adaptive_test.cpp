@@ -197,7 +197,9 @@ TEST(AdaptivePocket, KirimotoPocketFromARealPart) {
 
 TEST(AdaptivePocket, PcbViceBarSliceFromARealPart) {
   const Pocket p = load("pcbvicebar_slice.json");
-  expect_correct(p, run(p, 8.0, 1.6), 0.80, 0.79);
+  // (Removal 0.79 before session 23; splitting links where their feed changes moves the
+  // checker's samples along the same path: 0.787.)
+  expect_correct(p, run(p, 8.0, 1.6), 0.80, 0.78);
 }
 
 // Passes along a wall are put on one exact offset of it (adaptive.cpp): every floor point
@@ -210,8 +212,16 @@ TEST(AdaptivePocket, PassesAlongAWallSitOnOneOffset) {
   const Outcome o = run(p, 8.0, 1.2);
   const double on = 4.0 + 0.002, h = o.result.resolution_mm;
   int on_offset = 0;
-  for (const Move& m : o.result.toolpath.moves) {
+  const std::vector<Move>& mv = o.result.toolpath.moves;
+  for (std::size_t i = 0; i < mv.size(); ++i) {
+    const Move& m = mv[i];
     if (std::abs(m.end.z + 3.0) > 1e-9) continue;  // the floor pass
+    // A point where the path goes on straight is a change of feed (a link's ends next to a
+    // cut run at the cutting feed), not a path point: it lies on the chord between two.
+    if (i > 0 && i + 1 < mv.size() && std::abs(mv[i + 1].end.z - m.end.z) < 1e-9) {
+      const Vec2 u = m.end.xy() - mv[i - 1].end.xy(), w = mv[i + 1].end.xy() - m.end.xy();
+      if (std::abs(cross(u, w)) < 1e-9 * norm(u) * norm(w) && dot(u, w) > 0) continue;
+    }
     double d = 1e9;
     for (const Ring& r : p.region.rings)
       for (std::size_t k = 0; k < r.size(); ++k) {
