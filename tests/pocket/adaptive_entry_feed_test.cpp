@@ -43,22 +43,7 @@ std::vector<Case> cases() {
       {"channel (ramp)",
        make_pocket({{0, 0}, {40, 0}, {40, 8.8}, {0, 8.8}}, {}, "channel 8.8 x 40").value(), 8.0},
       // Two chambers joined by a neck a tenth wider than the ø10: plunged through.
-      {"dumbbell (neck plunges)",
-       make_pocket({{0, 0},
-                    {30, 0},
-                    {30, 10},
-                    {45, 10},
-                    {45, 0},
-                    {75, 0},
-                    {75, 30},
-                    {45, 30},
-                    {45, 20.1},
-                    {30, 20.1},
-                    {30, 30},
-                    {0, 30}},
-                   {}, "dumbbell")
-           .value(),
-       10.0},
+      {"dumbbell (neck plunges)", testing::dumbbell_pocket(), 10.0},
   };
 }
 

@@ -31,6 +31,26 @@ inline Pocket scaled(const Pocket& p, double s) {
   return make_pocket(outer, islands, p.source).value();
 }
 
+// Two 30 x 30 mm chambers joined by a channel 15 mm long and 10.1 mm wide, for a ø10 (a
+// tenth wider, as the necks of random pockets 1088 and 1096; from 0.3 wider the path gets
+// through without a slot).
+inline Pocket dumbbell_pocket() {
+  return make_pocket({{0, 0},
+                      {30, 0},
+                      {30, 10},
+                      {45, 10},
+                      {45, 0},
+                      {75, 0},
+                      {75, 30},
+                      {45, 30},
+                      {45, 20.1},
+                      {30, 20.1},
+                      {30, 30},
+                      {0, 30}},
+                     {}, "dumbbell")
+      .value();
+}
+
 // A flat end mill (Tool's defaults), built here so the tests need no tool parser.
 inline Tool flat_mill(double diameter_mm) {
   Tool t;

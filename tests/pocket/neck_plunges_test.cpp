@@ -17,33 +17,13 @@
 namespace swarf {
 namespace {
 
-// Two 30 x 30 mm chambers joined by a channel 15 mm long and 10.1 mm wide, for a ø10 (a
-// tenth wider, as the necks of random pockets 1088 and 1096; from 0.3 wider the path gets
-// through without a slot).
-Pocket dumbbell() {
-  return make_pocket({{0, 0},
-                      {30, 0},
-                      {30, 10},
-                      {45, 10},
-                      {45, 0},
-                      {75, 0},
-                      {75, 30},
-                      {45, 30},
-                      {45, 20.1},
-                      {30, 20.1},
-                      {30, 30},
-                      {0, 30}},
-                     {}, "dumbbell")
-      .value();
-}
-
 struct Cut {
   AdaptiveResult result;
   testing::SweepReport sweep;
 };
 
 Cut cut(bool plunge) {
-  const Pocket p = dumbbell();
+  const Pocket p = testing::dumbbell_pocket();
   AdaptiveParams ap = testing::params_3mm_deep(1.0);
   ap.depth_mm = 6.0;
   ap.straight_plunge = plunge;
