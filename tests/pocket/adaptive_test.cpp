@@ -185,6 +185,31 @@ TEST(AdaptivePocket, ChannelBarelyWiderThanTheTool) {
   EXPECT_EQ(o.result.helix_radius_mm, 0.0);
 }
 
+// The channel of random pocket 3053 (ø20, 2.1 mm of room, 60.17 mm long, walls off the
+// pixel grid): the ramp's ends came from a pixel march and stopped 0.25 and 0.17 mm short of
+// the exact reach; the path, snapped onto the end walls' exact offsets, then went on along
+// the ramp's line by that much at full depth, a full slot (0.2 mm by the sweep). The ends now
+// lie on those offsets (R + 2 um from the end walls) to within 1 um, and nothing slots.
+TEST(AdaptivePocket, RampReachesTheExactEndsOfAChannel) {
+  const double len = 60.17046, R = 10.0;
+  const Pocket ch =
+      make_pocket({{0, 0}, {22.11662, 0}, {22.11662, len}, {0, len}}, {}, "channel 3053").value();
+  const Outcome o = run(ch, 2.0 * R, 6.0);
+  expect_correct(ch, o, -1.0);
+  EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
+  const auto& mv = o.result.toolpath.moves;
+  std::size_t k = 1;
+  while (k < mv.size() && mv[k].kind != MoveKind::kRamp)
+    ++k;
+  ASSERT_LT(k, mv.size());
+  const double y0 = mv[k - 1].end.y, y1 = mv[k].end.y;
+  const double lo = R + 0.002, hi = len - R - 0.002;  // the exact reach along the channel
+  EXPECT_NEAR(std::min(y0, y1), lo, 1e-3);
+  EXPECT_NEAR(std::max(y0, y1), hi, 1e-3);
+  EXPECT_GE(std::min(y0, y1), lo - 1e-9);
+  EXPECT_LE(std::max(y0, y1), hi + 1e-9);
+}
+
 TEST(AdaptivePocket, StarWithSharpCorners) {
   const Pocket s = star(30.0, 14.0, 5);
   expect_correct(s, run(s, 8.0, 1.6), 0.84, 0.83);
