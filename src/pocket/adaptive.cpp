@@ -34,7 +34,7 @@ Status validate(const AdaptiveParams& p, const Tool& tool) {
   if (!(p.tolerance_pct > 0.0 && p.tolerance_pct <= 50.0))
     return bad("tolerance_pct must be in (0, 50] percent");
   if (p.step_mm < 0.0 || p.step_mm > 0.5 * d)
-    return bad("step_mm must be in (0, tool radius] mm (0 = diameter / 20)");
+    return bad("step_mm must be in (0, tool radius] mm (0 = stepover / 4 within [D / 40, D / 20])");
   if (!(p.max_deviation_deg >= 5.0 && p.max_deviation_deg <= 120.0))
     return bad("max_deviation_deg must be in [5, 120] degrees");
   if (p.resolution_mm < 0.0 || (p.resolution_mm > 0.0 && p.resolution_mm > 0.1 * d))
@@ -430,11 +430,22 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   auto chord_ok = [&](std::size_t a, std::size_t b) {
     return m.walls.segment_distance(lp.pts[a], lp.pts[b]) >= reach - 1e-7;
   };
+  // Runs also break where a step's engagement crosses the neck plunges' thresholds (110 and
+  // 160 degrees, neck_runs): an output move is judged by what its steps remove on average,
+  // and a 14.4 mm straight pass down a channel 0.05 mm wider than a ø10, a full slot over
+  // its first 6 mm and lighter after, read 96 degrees as one move, so its slot was cut
+  // (168 degrees by the sweep) instead of plunged through.
+  auto load_class = [&](std::size_t s) {
+    if (s >= res.steps.size() || lp.kind[s] == StepKind::kLink) return 0;
+    const double deg = res.steps[s].engagement_deg;
+    return deg >= 160.0 ? 2 : deg >= 110.0 ? 1 : 0;
+  };
   std::vector<std::size_t> keep;
   std::size_t run = 0;
   for (std::size_t k = 1; k <= lp.kind.size(); ++k) {
     const bool brk = k == lp.kind.size() || lp.jump[k] || lp.jump[k - 1] ||
-                     (lp.kind[k] == StepKind::kLink) != (lp.kind[k - 1] == StepKind::kLink);
+                     (lp.kind[k] == StepKind::kLink) != (lp.kind[k - 1] == StepKind::kLink) ||
+                     load_class(k) != load_class(k - 1);
     if (!brk) continue;
     std::vector<std::size_t> part;
     pocket::simplify_indices(lp.pts, run, k, tol, part, chord_ok);

@@ -141,7 +141,15 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
                   : p.stepover_mm > 0.0  ? p.stepover_mm
                                          : 0.1 * tool.diameter_mm;
   m.target_deg = engagement_angle_deg(m.stepover_mm, r);
-  m.step_mm = p.step_mm > 0.0 ? p.step_mm : tool.diameter_mm / 20.0;
+  // The step (seed 000's delta_step, which the paper leaves open): a quarter of the
+  // stepover, held within [D / 40, D / 20]. Measured (session 24, docs/pocket.md): against
+  // D / 20 at every stepover, a ø10 at 10 % holds +-20 % over 94.7 % of the L's cut instead
+  // of 92.4 % and its largest engagement falls 107 -> 79 degrees; a step of half the
+  // stepover turns each move further than the band allows beside walls. Below D / 40 the
+  // wide stepovers (20-30 %) lift far more often (the L at 20 %: 1 -> 32 lifts).
+  m.step_mm = p.step_mm > 0.0 ? p.step_mm
+                              : std::clamp(0.25 * m.stepover_mm, tool.diameter_mm / 40.0,
+                                           tool.diameter_mm / 20.0);
   // Resolution rule (seed 000 section 3.2, made explicit): a straight step at the target
   // stepover removes stepover x step mm^2. The count is noisy by about the square root of
   // the pixels along the two crescent arcs; at >= 64 pixels per step that noise stays near
@@ -156,9 +164,9 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   for (const Ring& ring : pocket.region.rings)
     for (Vec2 q : ring)
       box.add(q);
-  const double margin_mm = r + m.step_mm + p.wall_stock_mm;
-  auto pixels_at = [&](double h) {
-    const Vec2 size = box.size() + Vec2{2.0 * (margin_mm + 4.0 * h), 2.0 * (margin_mm + 4.0 * h)};
+  double margin_mm = r + m.step_mm + p.wall_stock_mm;
+  auto pixels_at = [&](double h, double margin) {
+    const Vec2 size = box.size() + Vec2{2.0 * (margin + 4.0 * h), 2.0 * (margin + 4.0 * h)};
     return (std::ceil(size.x / h) + 1.0) * (std::ceil(size.y / h) + 1.0);
   };
   // The pixel budget: a large pocket cut with a small tool (a 250 mm square with a 3 mm end
@@ -167,10 +175,17 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // and a straight step at the target still removes 16 (a count noisier by about half, still
   // inside the +-10 % band); beyond that, a clear error. An explicit resolution is not
   // changed.
-  if (p.resolution_mm <= 0.0 && pixels_at(m.h) > p.max_pixels) {
+  // The automatic step then grows back towards D / 20 to keep 64 pixels a step: at the
+  // coarser pixel the quarter-stepover step's count is noisier and its path twice as long
+  // (the L with a ø1 at 10 %, coarsened to 0.0118 mm: 16 s and 95.2 % within +-20 %
+  // against 6 s and 95.7 % at D / 20). The image is sized for the step it may grow to.
+  const bool auto_step = p.step_mm <= 0.0;
+  const double budget_margin_mm =
+      auto_step ? r + std::max(m.step_mm, tool.diameter_mm / 20.0) + p.wall_stock_mm : margin_mm;
+  if (p.resolution_mm <= 0.0 && pixels_at(m.h, margin_mm) > p.max_pixels) {
     const double coarsest = std::min(r / 20.0, std::sqrt(m.stepover_mm * m.step_mm / 16.0));
     double h = m.h;
-    for (int k = 0; k < 60 && pixels_at(h) > p.max_pixels; ++k)
+    for (int k = 0; k < 60 && pixels_at(h, budget_margin_mm) > p.max_pixels; ++k)
       h *= 1.02;
     if (h > coarsest)
       return bad_parameter(
@@ -179,6 +194,10 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
           std::to_string(static_cast<long long>(p.max_pixels)) + " pixels, resolution at least " +
           mm(coarsest) + "); split the pocket, use a larger tool or raise max_pixels");
     m.h = h;
+    if (auto_step) {
+      m.step_mm = std::clamp(64.0 * h * h / m.stepover_mm, m.step_mm, tool.diameter_mm / 20.0);
+      margin_mm = r + m.step_mm + p.wall_stock_mm;
+    }
   }
   m.target_px = m.stepover_mm * m.step_mm / (m.h * m.h);
   m.tol_px = std::max(1.0, m.target_px * p.tolerance_pct / 100.0);
@@ -266,6 +285,19 @@ Vec2 axis_point(const Model& m, int idx) {
   return m.grid.to_world(i, j);
 }
 
+// The smallest entry worth making instead of a straight plunge: a helix of a tenth of the
+// tool radius, or a ramp twice that long, which sweeps a path as wide (before, the ramp
+// needed only the helix's radius: whether a square 0.25 mm wider than a ø6 held a 0.3 mm
+// "ramp" then turned on the pixel size, the finer pixels of a shorter step finding one
+// where coarser ones did not). Twice the pixel at least, which the resolution rule's
+// R / 40 keeps below both.
+double min_helix_radius_mm(const Model& m) {
+  return std::max(2.0 * m.h, 0.1 * m.radius_mm);
+}
+double min_ramp_length_mm(const Model& m) {
+  return 2.0 * min_helix_radius_mm(m);
+}
+
 // Straight down at c, the moves starting there; `solid`: into uncut material.
 Entry plunge_at(Vec2 c, bool solid) {
   Entry e;
@@ -281,7 +313,8 @@ Entry plunge_at(Vec2 c, bool solid) {
 // directions); false when neither fits.
 bool entry_at(const Model& m, int idx, Entry& e) {
   const double r = m.radius_mm;
-  const double min_helix = std::max(2.0 * m.h, 0.1 * r);
+  const double min_helix = min_helix_radius_mm(m);
+  const double min_ramp = min_ramp_length_mm(m);
   const int i = idx % m.grid.width, j = idx / m.grid.width;
   const Vec2 c = m.grid.to_world(i, j);
   const double room = clearance_mm(m, i, j) - r - m.h;  // helix radius that fits
@@ -316,7 +349,7 @@ bool entry_at(const Model& m, int idx, Entry& e) {
   // (session 15: random pocket seed 528, ø3, a new entry's ramp ended 4 um into a round
   // island by the sweep).
   const double need = r + m.wall_stock_mm + kWallClearanceMm;
-  while (best_len >= min_helix && m.walls.segment_distance(ba, bb) < need) {
+  while (best_len >= min_ramp && m.walls.segment_distance(ba, bb) < need) {
     const Vec2 d = (bb - ba) * (m.h / best_len);
     if (m.walls.distance(ba) < m.walls.distance(bb))
       ba = ba + d;
@@ -324,7 +357,7 @@ bool entry_at(const Model& m, int idx, Entry& e) {
       bb = bb - d;
     best_len = distance(ba, bb);
   }
-  if (best_len < min_helix) return false;
+  if (best_len < min_ramp) return false;
   e.ramp_a = ba;
   e.ramp_b = bb;
   e.start = bb;
@@ -407,8 +440,9 @@ Result<std::vector<Entry>> find_entries(const Model& m, int count) {
     char b[96];
     std::snprintf(b, sizeof b, "(%.3f, %.3f)", c.x, c.y);
     return Status(Error::kNoEntryFound, "the tool fits at " + std::string(b) +
-                                            " but there is no room for a helix or a ramp (needs " +
-                                            mm(std::max(2.0 * m.h, 0.1 * r)) + " of free travel)");
+                                            " but there is no room for a helix of " +
+                                            mm(min_helix_radius_mm(m)) + " radius or a ramp " +
+                                            mm(min_ramp_length_mm(m)) + " long)");
   }
   return out;
 }

@@ -120,7 +120,22 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
     if (d < 1e-9 || d >= on + wide || (d >= on + riding && !last_pass(k))) continue;
     Vec2& p = lp.pts[k];
     const Vec2 s = foot[k] + (p - foot[k]) * (on / d);
-    if (m.walls.distance(s) >= on - 1e-9 && m.walls.inside(s)) {
+    // In a channel less than the snapping band wider than the tool, the other wall's band
+    // holds the point too, and the chooser's pixel path wanders between the two rims of its
+    // strip of free centres (which reach up to half a pixel past the exact offset): pushed
+    // out onto the nearer wall's offset each time, it became a zig-zag of +-24 degrees
+    // between the two offsets (a ø10 through a neck 10.1 mm wide, once the pixels were fine
+    // enough for free centres to fit in it), cutting the neck at 145-165 degrees, where a
+    // straight pass is the plain slot that the neck plunges take. Such a point goes to the
+    // middle of the channel, the place with the most room, so the pass runs straight down
+    // it whatever the pixel.
+    const Vec2 across = s + (p - foot[k]) * ((on + wide) / d);
+    if (!m.walls.inside(across)) {
+      const Vec2 mid = (foot[k] + m.walls.nearest(across)) * 0.5;
+      if (m.walls.inside(mid) && m.walls.distance(mid) > d && distance(mid, p) < 2.0 * wide)
+        p = mid;
+      if (m.walls.distance(p) < reach - 1e-9) push_out_of_walls(m, p, on, reach);
+    } else if (m.walls.distance(s) >= on - 1e-9 && m.walls.inside(s)) {
       p = s;
     } else if (d < reach - 1e-9) {
       push_out_of_walls(m, p, on, reach);

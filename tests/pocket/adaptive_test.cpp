@@ -634,16 +634,19 @@ TEST(AdaptivePocket, RandomPocketWithMaterialReachedOnlyBetweenPixelCentres) {
 }
 
 // The same in a straight channel: a ø10 beside an island 10.05 mm from the wall (0.025 mm of
-// room each side, the simulation pixel is 0.088 mm). The channel's middle is reached from
-// nowhere else; it was left whole (127 mm^2 by the sweep).
-TEST(AdaptivePocket, ChannelAHairWiderThanTheToolIsTakenByStraightPlunges) {
+// room each side). The channel's middle is reached from nowhere else; it was left whole
+// (127 mm^2 by the sweep). Whether a row of pixel centres falls inside the 0.05 mm strip of
+// free centres turns on the pixel: with none, straight plunges take the channel; with one,
+// the passes reach it and the neck plunges go through it. Either way it is plunged, not
+// left and not slotted.
+TEST(AdaptivePocket, ChannelAHairWiderThanTheToolIsTakenByPlunges) {
   const Pocket p =
       make_pocket({{0, 0}, {80, 0}, {80, 60}, {0, 60}},
                   {{{20, 20}, {69.95, 20}, {69.95, 40}, {20, 40}}}, "80 x 60, channel 10.05 mm")
           .value();
   const Outcome o = run(p, 10.0, 1.0);
   EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
-  EXPECT_GE(o.result.straight_plunges, 3);
+  EXPECT_GE(o.result.straight_plunges + o.result.neck_plunges, 3);
   EXPECT_LE(o.sweep.residual_mm2, kResidualPerCornerMm2 * 8);
   // Every retract leaves the floor straight up. After a plunge the path's point there had
   // been snapped to the wall offset 0.02 mm away, and the rapid went sideways at the floor.
@@ -699,17 +702,19 @@ TEST(AdaptivePocket, PocketTooLargeForThePixelBudgetCoarsensTheResolution) {
   AdaptiveParams ap;
   ap.stepover_mm = 0.2;
   ap.depth_mm = 3.0;
-  // The rule (docs/pocket.md): min(sqrt(stepover x step / 64), R / 40) = 0.0177 mm, about
-  // 2.3 million pixels here.
-  const double rule_mm = std::min(std::sqrt(0.2 * 0.1 / 64.0), 1.0 / 40.0);
-  ap.max_pixels = 7e5;
+  // The rule (docs/pocket.md): the step a quarter of the stepover within [D / 40, D / 20]
+  // = 0.05 mm, the pixel min(sqrt(stepover x step / 64), R / 40) = 0.0125 mm, about 4.6
+  // million pixels here.
+  const double step_mm = std::clamp(0.25 * 0.2, 2.0 / 40.0, 2.0 / 20.0);
+  const double rule_mm = std::min(std::sqrt(0.2 * step_mm / 64.0), 1.0 / 40.0);
+  ap.max_pixels = 1.5e6;
   auto coarse = adaptive_pocket(p, t, ap);
   ASSERT_TRUE(coarse.ok()) << coarse.status().to_string();
   const double h = coarse->resolution_mm;
   EXPECT_GT(h, 1.5 * rule_mm);
   EXPECT_DOUBLE_EQ(coarse->rule_resolution_mm, rule_mm);  // reported, so users can tell
-  const double margin = 1.0 + 0.1 + 4.0 * h;  // tool radius, step, four pixels (make_model)
-  EXPECT_LE((std::ceil((30 + 2 * margin) / h) + 1) * (std::ceil((20 + 2 * margin) / h) + 1), 7e5);
+  const double margin = 1.0 + step_mm + 4.0 * h;  // tool radius, step, four pixels (make_model)
+  EXPECT_LE((std::ceil((30 + 2 * margin) / h) + 1) * (std::ceil((20 + 2 * margin) / h) + 1), 1.5e6);
   const auto s = testing::sweep_check(p.region, 1.0, coarse->toolpath,
                                       coarse->target_engagement_deg, 0.05, 0.1);
   std::printf("  coarsened to %.4f mm (rule %.4f): residual %.3f mm2, within20 %.1f %%\n", h,
@@ -727,7 +732,7 @@ TEST(AdaptivePocket, PocketTooLargeForThePixelBudgetCoarsensTheResolution) {
   EXPECT_NE(none.status().to_string().find("pixel budget"), std::string::npos)
       << none.status().to_string();
   // An explicit resolution is never changed: over the budget it is an error too.
-  ap.max_pixels = 7e5;
+  ap.max_pixels = 1.5e6;
   ap.resolution_mm = rule_mm;
   auto fixed = adaptive_pocket(p, t, ap);
   ASSERT_FALSE(fixed.ok());

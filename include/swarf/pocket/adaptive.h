@@ -30,7 +30,8 @@ struct AdaptiveParams {
   /// Band around the target engagement accepted without searching further (seed 000
   /// Algorithm 3's delta_tol), percent of the target.
   double tolerance_pct = 10.0;
-  /// Length of one path step (seed 000 delta_step), mm; 0 = tool diameter / 20.
+  /// Length of one path step (seed 000 delta_step), mm; 0 = a quarter of the stepover
+  /// within [D / 40, D / 20].
   double step_mm = 0.0;
   /// Largest change of direction between two steps (seed 000 theta_max, Algorithm 5), deg.
   double max_deviation_deg = 90.0;
