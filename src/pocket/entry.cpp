@@ -144,9 +144,9 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // The step (seed 000's delta_step, which the paper leaves open): a quarter of the
   // stepover, held within [D / 40, D / 20]. Measured (session 24, docs/pocket.md): against
   // D / 20 at every stepover, a ø10 at 10 % holds +-20 % over 94.7 % of the L's cut instead
-  // of 92.4 % and its largest engagement falls 107 -> 79 degrees; a step of half the
-  // stepover turns each move further than the band allows beside walls. Below D / 40 the
-  // wide stepovers (20-30 %) lift far more often (the L at 20 %: 1 -> 32 lifts).
+  // of 92.4 % and its largest engagement falls 107 -> 79 degrees (the random batches: +0.5
+  // to +0.8 points). Below D / 40 the wide stepovers (20-30 %) lift far more often (the L
+  // at 20 %: 1 -> 32 lifts).
   m.step_mm = p.step_mm > 0.0 ? p.step_mm
                               : std::clamp(0.25 * m.stepover_mm, tool.diameter_mm / 40.0,
                                            tool.diameter_mm / 20.0);
@@ -177,8 +177,9 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // changed.
   // The automatic step then grows back towards D / 20 to keep 64 pixels a step: at the
   // coarser pixel the quarter-stepover step's count is noisier and its path twice as long
-  // (the L with a ø1 at 10 %, coarsened to 0.0118 mm: 16 s and 95.2 % within +-20 %
-  // against 6 s and 95.7 % at D / 20). The image is sized for the step it may grow to.
+  // (the L with a ø1 at 10 %, coarsened to 0.0118 mm: 16 s with the quarter step, 8.6 s
+  // with the step grown to D / 20, 95.2 % within +-20 % by the sweep either way). The
+  // image is sized for the step it may grow to.
   const bool auto_step = p.step_mm <= 0.0;
   const double budget_margin_mm =
       auto_step ? r + std::max(m.step_mm, tool.diameter_mm / 20.0) + p.wall_stock_mm : margin_mm;
