@@ -647,6 +647,7 @@ TEST(AdaptivePocket, ChannelAHairWiderThanTheToolIsTakenByPlunges) {
   const Outcome o = run(p, 10.0, 1.0);
   EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
   EXPECT_GE(o.result.straight_plunges + o.result.neck_plunges, 3);
+  EXPECT_LE(o.sweep.slot_length_mm, 0.5);
   EXPECT_LE(o.sweep.residual_mm2, kResidualPerCornerMm2 * 8);
   // Every retract leaves the floor straight up. After a plunge the path's point there had
   // been snapped to the wall offset 0.02 mm away, and the rapid went sideways at the floor.

@@ -19,9 +19,9 @@ namespace {
 
 // A cut 94 % of the diameter wide or more: the whole front of the tool in the material.
 // Through a neck 0.1 mm wider than the tool every pass is one, but not always a full slot
-// by the sweep's 170 degrees: where a row of free pixel centres fits in the neck (as the
-// pixel size has it), the passes zig-zag between the two walls and the walls cut the
-// arc in contact to 145-165 degrees.
+// by the sweep's 170 degrees: that turns on where the pass lies between the walls, which
+// turns on the pixel (passes zig-zagging between the two walls' offsets read 145-165
+// degrees, before such points went to the channel's middle).
 constexpr double kHeavyDeg = 140.0;
 
 struct Cut {
