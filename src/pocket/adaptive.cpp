@@ -430,15 +430,15 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   auto chord_ok = [&](std::size_t a, std::size_t b) {
     return m.walls.segment_distance(lp.pts[a], lp.pts[b]) >= reach - 1e-7;
   };
-  // Runs also break where a step's engagement crosses the neck plunges' thresholds (110 and
-  // 160 degrees, neck_runs): an output move is judged by what its steps remove on average,
-  // and a 14.4 mm straight pass down a channel 0.05 mm wider than a ø10, a full slot over
-  // its first 6 mm and lighter after, read 96 degrees as one move, so its slot was cut
-  // (168 degrees by the sweep) instead of plunged through.
+  // Runs also break where a step's engagement crosses the neck plunges' thresholds
+  // (kNeckTightDeg and kNeckSlotDeg, neck_runs): an output move is judged by what its steps remove
+  // on average, and a 14.4 mm straight pass down a channel 0.05 mm wider than a ø10, a full slot
+  // over its first 6 mm and lighter after, read 96 degrees as one move, so its slot was cut (168
+  // degrees by the sweep) instead of plunged through.
   auto load_class = [&](std::size_t s) {
     if (s >= res.steps.size() || lp.kind[s] == StepKind::kLink) return 0;
     const double deg = res.steps[s].engagement_deg;
-    return deg >= 160.0 ? 2 : deg >= 110.0 ? 1 : 0;
+    return deg >= pocket::kNeckSlotDeg ? 2 : deg >= pocket::kNeckTightDeg ? 1 : 0;
   };
   std::vector<std::size_t> keep;
   std::size_t run = 0;

@@ -157,6 +157,10 @@ struct KeptMove {
 /// that cut a full slot: a neck barely wider than the tool (neck_plunges.cpp). Runs are
 /// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
 /// walls within a millimetre of the tool on both sides (1 mm or longer).
+/// The removal angles neck_runs judges by (neck_plunges.cpp says why): a full slot
+/// anywhere, and a heavy cut between close walls. The output simplification keeps moves
+/// apart where a step crosses either, so a move's average does not hide them.
+constexpr double kNeckSlotDeg = 160.0, kNeckTightDeg = 110.0;
 struct NeckRun {
   std::size_t first = 0, last = 0;
   double length_mm = 0.0;

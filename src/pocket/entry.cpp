@@ -147,9 +147,10 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // of 92.4 % and its largest engagement falls 107 -> 79 degrees (the random batches: +0.5
   // to +0.8 points). Below D / 40 the wide stepovers (20-30 %) lift far more often (the L
   // at 20 %: 1 -> 32 lifts).
-  m.step_mm = p.step_mm > 0.0 ? p.step_mm
-                              : std::clamp(0.25 * m.stepover_mm, tool.diameter_mm / 40.0,
-                                           tool.diameter_mm / 20.0);
+  const double longest_auto_step_mm = tool.diameter_mm / 20.0;
+  m.step_mm = p.step_mm > 0.0
+                  ? p.step_mm
+                  : std::clamp(0.25 * m.stepover_mm, tool.diameter_mm / 40.0, longest_auto_step_mm);
   // Resolution rule (seed 000 section 3.2, made explicit): a straight step at the target
   // stepover removes stepover x step mm^2. The count is noisy by about the square root of
   // the pixels along the two crescent arcs; at >= 64 pixels per step that noise stays near
@@ -182,7 +183,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // image is sized for the step it may grow to.
   const bool auto_step = p.step_mm <= 0.0;
   const double budget_margin_mm =
-      auto_step ? r + std::max(m.step_mm, tool.diameter_mm / 20.0) + p.wall_stock_mm : margin_mm;
+      auto_step ? r + longest_auto_step_mm + p.wall_stock_mm : margin_mm;
   if (p.resolution_mm <= 0.0 && pixels_at(m.h, margin_mm) > p.max_pixels) {
     const double coarsest = std::min(r / 20.0, std::sqrt(m.stepover_mm * m.step_mm / 16.0));
     double h = m.h;
@@ -196,7 +197,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
           mm(coarsest) + "); split the pocket, use a larger tool or raise max_pixels");
     m.h = h;
     if (auto_step) {
-      m.step_mm = std::clamp(64.0 * h * h / m.stepover_mm, m.step_mm, tool.diameter_mm / 20.0);
+      m.step_mm = std::clamp(64.0 * h * h / m.stepover_mm, m.step_mm, longest_auto_step_mm);
       margin_mm = r + m.step_mm + p.wall_stock_mm;
     }
   }

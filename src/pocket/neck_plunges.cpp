@@ -22,14 +22,14 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
                                const std::vector<KeptMove>& kept) {
   // A removal angle of 160 degrees is a cut 97 % of the diameter wide: a full slot wherever
   // it is (the move chooser's slot test stops at 160 degrees too, move_chooser.cpp).
-  constexpr double kSlotDeg = 160.0;
+  constexpr double kSlotDeg = kNeckSlotDeg;
   // Between walls less than a millimetre beyond the tool on both sides, the model reads
   // short: its material is what the free pixel centres reach, so the slivers a few tenths
   // thick beside the tool are not in it, and a pass the sweep sees touching material across
   // its whole front half reads 145-165 degrees (random pocket 1088: a ø20 between an island
   // and the wall 20.08 mm apart, 11.8 mm of full slot by the sweep). There a cut of 110
   // degrees (two thirds of the diameter wide) over a millimetre or more counts as the slot.
-  constexpr double kTightMarginMm = 1.0, kTightDeg = 110.0, kTightRunMm = 1.0;
+  constexpr double kTightMarginMm = 1.0, kTightDeg = kNeckTightDeg, kTightRunMm = 1.0;
   // Shorter runs of full slot are single short moves whose removal per length reads high on
   // the pixels.
   constexpr double kMinRunMm = 0.2;
