@@ -105,10 +105,11 @@ struct LinkedPath {
   /// the scallop rides' dabs (wall_rides.cpp): beyond the free pixel centres, whose disks
   /// alone make the initial material; the re-simulation adds what their disks cover.
   std::vector<Vec2> beyond_free;
-  /// Where the moves of the scallop rides and dabs that take the scallops end (wall_rides.cpp):
-  /// those moves cut by design, so they run at the cutting feed whatever the re-simulation
-  /// reads (its pixels see less of a wall sliver than is there).
-  std::vector<Vec2> scallop_cuts;
+  /// Where moves that cut by design end: those of the scallop rides and dabs that take the
+  /// scallops (wall_rides.cpp) and the tip visits' last move into the tip (wall_reach.cpp).
+  /// They run at the cutting feed whatever the re-simulation reads (its pixels see less of
+  /// a wall sliver, or of what earlier passes left in a tip, than is there).
+  std::vector<Vec2> design_cut_ends;
   int trochoid_groups = 0;
   int boundary_groups = 0;
 };

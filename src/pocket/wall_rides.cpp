@@ -239,7 +239,7 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
       pts.push_back(ride.pts[k]);
     }
     ride.pts = std::move(pts);
-    lp.scallop_cuts.insert(lp.scallop_cuts.end(), ride.pts.begin() + 1, ride.pts.end());
+    lp.design_cut_ends.insert(lp.design_cut_ends.end(), ride.pts.begin() + 1, ride.pts.end());
   }
   // The way from a to b over the cleared floor: straight, or round the walls in its way
   // (points pushed off them), b last; empty when neither keeps off the walls.
