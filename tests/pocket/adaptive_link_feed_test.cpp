@@ -270,7 +270,10 @@ TEST(AdaptivePocket, ScallopDabsAndRidesRunAtTheCuttingFeed) {
   std::printf("  link-feed removal %.3f mm^2 without the dabs, %.3f with; residual %.2f, %.2f\n",
               link_removal[0], link_removal[1], residual[0], residual[1]);
   EXPECT_LE(link_removal[1], link_removal[0] + 0.05);
-  EXPECT_LE(residual[1], residual[0] - 0.5);  // and the dabs take the scallops
+  // And the dabs take the scallops: three quarters of what the path leaves without them at
+  // least (0.40 -> 0.08 mm^2 here since session 26, whose path leaves less by itself; the
+  // test asked for 0.5 mm^2 less before).
+  EXPECT_LE(residual[1], 0.25 * residual[0]);
 }
 
 }  // namespace

@@ -45,11 +45,16 @@ Outcome run(const std::string& file, double tool_d, double stepover_mm) {
 // round to the channel's other front, and back, a crescent at each with a retract between
 // (pocket 2446, a ring channel round a boss: 23 lifts and 167 s; pocket 1046, the two ends
 // of a C-shaped region: 11 lifts and 173 s). Where only such crumbs hold the point back, a
-// step or a step and a half behind the front is tried too.
+// step or a step and a half behind the front is tried too. And the material at the front
+// the tool has just cut from is not left given up (pocket 2440, channels 1.25 mm wider than
+// a ø20 at 8 %: the material at both fronts had been given up by earlier sessions, no
+// resume was looked for there, and the tool walked 50 to 60 mm from one front to the
+// other 55 times: 11.6 m in the air and 270 s).
 TEST(AdaptiveResume, AChannelIsClearedFromOneFrontAtATimeNotInTurns) {
   for (const auto& [file, d, so, most_lifts, most_s] :
        {std::tuple{"random_seed2446.json", 12.0, 3.6, 2U, 130.0},
-        {"random_seed1046.json", 20.0, 6.0, 7U, 165.0}}) {
+        {"random_seed1046.json", 20.0, 6.0, 7U, 165.0},
+        {"random_seed2440.json", 20.0, 1.6, 5U, 180.0}}) {
     const Outcome r = run(file, d, so);
     EXPECT_LE(r.metrics.lift_offs, most_lifts) << file;
     EXPECT_LE(r.metrics.machining_time_s, most_s) << file;

@@ -186,8 +186,11 @@ TEST(AdaptivePocketStock, ScallopsLeftOnTheWallsAtAHighStepoverAreTakenOff) {
     return s;
   };
   const auto s = swept(r), s_none = swept(none);
-  EXPECT_GE(s_none.residual_mm2, 1.0);  // the scallops are there without the dabs
+  // The scallops are there without the dabs (0.97 mm^2 since session 26, whose path leaves
+  // less by itself; over 1.0 before), and the dabs take three quarters of them at least.
+  EXPECT_GE(s_none.residual_mm2, 0.5);
   EXPECT_LE(s.residual_mm2, 0.15);
+  EXPECT_LE(s.residual_mm2, 0.25 * s_none.residual_mm2);
   EXPECT_LE(s.max_gouge_mm, 1e-6);
   EXPECT_EQ(s.slot_length_mm, 0.0);
   EXPECT_LE(s.cutting_length_mm, s_none.cutting_length_mm + 20.0);
