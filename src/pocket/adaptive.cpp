@@ -157,7 +157,7 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
       for (int s = 1; s <= n; ++s) {
         const Vec2 q = a + (b - a) * (static_cast<double>(s) / n);
         if (gouges_exactly(m, q)) ++res.gouge_steps;
-        removed += stock.cut(p, q, record, &rec);
+        removed += stock.cut_tagging(p, q, map.cells.data(), map.width, rec.tag);
         p = q;
       }
     }

@@ -279,9 +279,8 @@ template <bool kHw>
   return n;
 }
 
-template <bool kHw>
-[[gnu::always_inline]] inline int PixelStock::cut_t(Vec2 from, Vec2 to, CutVisitor visit,
-                                                    void* user) {
+template <bool kHw, class RowVisit>
+[[gnu::always_inline]] inline int PixelStock::cut_t(Vec2 from, Vec2 to, RowVisit&& visit) {
   int n = 0;
   // The blocks of each band the cut cleared pixels in are recomputed once the cut has left
   // that band (rows come in increasing order): word columns w0 to w1 of band `band`.
@@ -290,7 +289,7 @@ template <bool kHw>
     if (w0 <= w1) update_block_occupancy(material_blocks_, material_, band, w0, w1);
   };
   crescent_rows(from, to, material_blocks_, [&](int j, int x0, int x1) SWARF_INLINE {
-    if (visit != nullptr) material_.for_each_set(j, x0, x1, [&](int i) { visit(user, i, j); });
+    visit(j, x0, x1);
     const int cleared = material_.clear<kHw>(j, x0, x1);
     if (cleared == 0) return true;
     n += cleared;
@@ -365,8 +364,35 @@ template <bool kHw>
 SWARF_TARGET_HW int PixelStock::probe_hw(Vec2 from, Vec2 to, int enough) const {
   return probe_t<true>(from, to, enough);
 }
+namespace {
+// The row visitors of cut and cut_tagging: through the caller's pointer per pixel, or a tag
+// written into a map.
+struct CallPerPixel {
+  const BitImage& material;
+  CutVisitor visit;
+  void* user;
+  SWARF_INLINE void operator()(int j, int x0, int x1) const {
+    if (visit != nullptr) material.for_each_set(j, x0, x1, [&](int i) { visit(user, i, j); });
+  }
+};
+struct Tag {
+  const BitImage& material;
+  std::uint32_t* cells;
+  int width;
+  std::uint32_t tag;
+  SWARF_INLINE void operator()(int j, int x0, int x1) const {
+    std::uint32_t* row = cells + static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
+    material.for_each_set(j, x0, x1, [&](int i) { row[i] = tag; });
+  }
+};
+}  // namespace
+
 SWARF_TARGET_HW int PixelStock::cut_hw(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
-  return cut_t<true>(from, to, visit, user);
+  return cut_t<true>(from, to, CallPerPixel{material_, visit, user});
+}
+SWARF_TARGET_HW int PixelStock::cut_tagging_hw(Vec2 from, Vec2 to, std::uint32_t* cells, int width,
+                                               std::uint32_t tag) {
+  return cut_t<true>(from, to, Tag{material_, cells, width, tag});
 }
 SWARF_TARGET_HW bool PixelStock::gouges_hw(Vec2 centre) const {
   return gouges_t<true>(centre);
@@ -397,7 +423,14 @@ int PixelStock::cut(Vec2 from, Vec2 to, CutVisitor visit, void* user) {
 #ifdef SWARF_POCKET_DISPATCH
   if (cpu_has_hw()) return cut_hw(from, to, visit, user);
 #endif
-  return cut_t<false>(from, to, visit, user);
+  return cut_t<false>(from, to, CallPerPixel{material_, visit, user});
+}
+int PixelStock::cut_tagging(Vec2 from, Vec2 to, std::uint32_t* cells, int width,
+                            std::uint32_t tag) {
+#ifdef SWARF_POCKET_DISPATCH
+  if (cpu_has_hw()) return cut_tagging_hw(from, to, cells, width, tag);
+#endif
+  return cut_t<false>(from, to, Tag{material_, cells, width, tag});
 }
 bool PixelStock::gouges_scan(Vec2 centre) const {
 #ifdef SWARF_POCKET_DISPATCH

@@ -196,6 +196,9 @@ class PixelStock {
   int probe_disk(Vec2 to, int enough = kNoLimit) const;
   /// Removes the material of disk(to) minus disk(from); returns the pixels removed.
   int cut(Vec2 from, Vec2 to, CutVisitor visit = nullptr, void* user = nullptr);
+  /// cut() that writes `tag` into cells[j * width + i] for each pixel (i, j) it removes:
+  /// the re-simulation's cut map, without a call through a pointer per pixel.
+  int cut_tagging(Vec2 from, Vec2 to, std::uint32_t* cells, int width, std::uint32_t tag);
   /// Lets tests run the portable code on a CPU that has POPCNT and SSE4.1 (results must
   /// not depend on it). Not thread-safe against running stocks; default true.
   static void allow_cpu_features(bool allow);
@@ -232,8 +235,9 @@ class PixelStock {
   // results bit for bit (integer counts; floor and ceil are exact either way).
   template <bool kHw>
   int probe_t(Vec2 from, Vec2 to, int enough) const;
-  template <bool kHw>
-  int cut_t(Vec2 from, Vec2 to, CutVisitor visit, void* user);
+  // visit(j, x0, x1) sees each row piece before it is cleared.
+  template <bool kHw, class RowVisit>
+  int cut_t(Vec2 from, Vec2 to, RowVisit&& visit);
   bool gouges_scan(Vec2 centre) const;  // the disk scan behind gouges()
   // The clearance map's value (px) at the pixel nearest to p, when there is a map and p's
   // pixel is in the image. The nearest forbidden pixel lies within c +- 0.71 of p.
@@ -252,6 +256,7 @@ class PixelStock {
   int material_in_disk_t(Vec2 centre, double radius_mm, int enough) const;
   int probe_hw(Vec2 from, Vec2 to, int enough) const;
   int cut_hw(Vec2 from, Vec2 to, CutVisitor visit, void* user);
+  int cut_tagging_hw(Vec2 from, Vec2 to, std::uint32_t* cells, int width, std::uint32_t tag);
   bool gouges_hw(Vec2 centre) const;
   int material_in_disk_hw(Vec2 centre, double radius_mm, int enough) const;
   Grid grid_;

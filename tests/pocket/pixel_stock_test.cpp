@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "pocket/distance_transform.h"
 #include "swarf/pocket/adaptive.h"
@@ -75,6 +78,46 @@ TEST(PixelStock, ProbeAndCutCountTheCrescentExactly) {
     PixelStock::allow_cpu_features(true);
     EXPECT_EQ(stock.cut(a, b), expect) << "cut " << t;
     EXPECT_EQ(stock.probe(a, b), 0) << "after the cut " << t;
+  }
+}
+
+// cut_tagging (the re-simulation's cut map) writes its tag into exactly the pixels the cut
+// removes, by brute force, and leaves every other cell alone; on both CPU paths.
+TEST(PixelStock, CutTaggingMarksExactlyThePixelsItRemoves) {
+  for (const bool hw : {true, false}) {
+    Fixture f = random_image(5);
+    const double r_mm = 2.5;  // 25 pixels
+    PixelStock stock(f.grid, f.material, f.forbidden, r_mm);
+    std::vector<std::uint32_t> cells(static_cast<std::size_t>(f.grid.width) * f.grid.height, 1u);
+    std::vector<std::uint32_t> expect = cells;
+    BitImage truth = f.material;
+    PixelStock::allow_cpu_features(hw);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Vec2 a{15.0, 13.0};
+    int removed = 0;
+    for (std::uint32_t tag = 2; tag < 40; ++tag) {
+      const double ang = 6.283 * u(rng);
+      const Vec2 b{std::clamp(a.x + 0.4 * std::cos(ang), 3.5, 26.5),
+                   std::clamp(a.y + std::round(64.0 * 0.4 * std::sin(ang)) / 64.0, 3.5, 22.5)};
+      const Vec2 pa = a / f.grid.h, pb = b / f.grid.h;
+      int n = 0;
+      for (int j = 0; j < f.grid.height; ++j)
+        for (int i = 0; i < f.grid.width; ++i)
+          if (in_disk(i, j, pb, 25.0) && !in_disk(i, j, pa, 25.0) && truth.get(i, j)) {
+            truth.set(i, j, false);
+            expect[f.grid.index(i, j)] = tag;
+            ++n;
+          }
+      const int got = stock.cut_tagging(a, b, cells.data(), f.grid.width, tag);
+      EXPECT_EQ(got, n) << "cut " << tag << (hw ? "" : " (portable)");
+      removed += got;
+      a = b;
+    }
+    PixelStock::allow_cpu_features(true);
+    EXPECT_GT(removed, 1000);  // the cuts did meet material
+    EXPECT_TRUE(cells == expect) << (hw ? "" : "portable");
+    EXPECT_EQ(stock.material().count_all(), truth.count_all());
   }
 }
 
