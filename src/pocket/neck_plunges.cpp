@@ -20,16 +20,16 @@ namespace swarf::pocket {
 std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
                                const std::vector<std::size_t>& keep,
                                const std::vector<KeptMove>& kept) {
-  // A removal angle of 160 degrees is a cut 97 % of the diameter wide: a full slot wherever
-  // it is (the move chooser's slot test stops at 160 degrees too, move_chooser.cpp).
-  constexpr double kSlotDeg = kNeckSlotDeg;
+  // kNeckSlotDeg, 160 degrees, is a cut 97 % of the diameter wide: a full slot wherever it
+  // is (the move chooser's slot test stops at 160 degrees too, move_chooser.cpp).
   // Between walls less than a millimetre beyond the tool on both sides, the model reads
   // short: its material is what the free pixel centres reach, so the slivers a few tenths
   // thick beside the tool are not in it, and a pass the sweep sees touching material across
   // its whole front half reads 145-165 degrees (random pocket 1088: a ø20 between an island
-  // and the wall 20.08 mm apart, 11.8 mm of full slot by the sweep). There a cut of 110
-  // degrees (two thirds of the diameter wide) over a millimetre or more counts as the slot.
-  constexpr double kTightMarginMm = 1.0, kTightDeg = kNeckTightDeg, kTightRunMm = 1.0;
+  // and the wall 20.08 mm apart, 11.8 mm of full slot by the sweep). There a cut of
+  // kNeckTightDeg, 110 degrees (two thirds of the diameter wide), over a millimetre or more
+  // counts as the slot.
+  constexpr double kTightMarginMm = 1.0, kTightRunMm = 1.0;
   // Shorter runs of full slot are single short moves whose removal per length reads high on
   // the pixels.
   constexpr double kMinRunMm = 0.2;
@@ -53,7 +53,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
-    return kept[q].deg >= kSlotDeg || (kept[q].deg >= kTightDeg && tight(q));
+    return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && tight(q));
   };
   std::vector<NeckRun> out;
   for (std::size_t q = 1; q < keep.size();) {
@@ -66,7 +66,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
     bool full = false;  // a full slot by the model itself
     for (; q < keep.size() && slot(q); ++q) {
       n.length_mm += kept[q].len;
-      full = full || kept[q].deg >= kSlotDeg;
+      full = full || kept[q].deg >= kNeckSlotDeg;
     }
     n.last = q - 1;
     // Tight runs shorter than a millimetre are mostly trochoidal loops in a channel, one
