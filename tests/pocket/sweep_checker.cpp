@@ -129,35 +129,113 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   const int w = static_cast<int>(std::ceil(box.size().x / h)) + 1;
   const int ht = static_cast<int>(std::ceil(box.size().y / h)) + 1;
   auto centre = [&](int i, int j) { return box.min + Vec2{i * h, j * h}; };
-  // 0 outside, 1 material, 2 cut.
+  // 0 outside, 1 material, 2 cut. Row by row: a cell is inside when an odd number of the
+  // region's edge crossings of its row lie to its right (the even-odd rule of inside(),
+  // with the same crossing test and the same arithmetic, so the same cells).
   std::vector<unsigned char> cell(static_cast<std::size_t>(w) * ht, 0);
-  std::vector<float> wall_d(cell.size(), 0.f);
-  for (int j = 0; j < ht; ++j)
+  std::vector<double> crossings;
+  for (int j = 0; j < ht; ++j) {
+    const double y = box.min.y + j * h;
+    crossings.clear();
+    for (const Ring& r : region.rings)
+      for (std::size_t a = 0, b = r.size() - 1; a < r.size(); b = a++)
+        if ((r[a].y > y) != (r[b].y > y))
+          crossings.push_back((r[b].x - r[a].x) * (y - r[a].y) / (r[b].y - r[a].y) + r[a].x);
+    std::sort(crossings.begin(), crossings.end());
+    std::size_t right = 0;  // crossings at or left of the cell: x < crossing counts those right
     for (int i = 0; i < w; ++i) {
-      const Vec2 p = centre(i, j);
-      if (inside(region, p)) {
-        cell[static_cast<std::size_t>(j) * w + i] = 1;
-        wall_d[static_cast<std::size_t>(j) * w + i] = static_cast<float>(edge_distance(region, p));
-      }
+      const double x = box.min.x + i * h;
+      while (right < crossings.size() && !(x < crossings[right]))
+        ++right;
+      if ((crossings.size() - right) % 2 == 1) cell[static_cast<std::size_t>(j) * w + i] = 1;
     }
-  auto stamp = [&](Vec2 c, std::vector<unsigned char>& img, unsigned char from,
-                   unsigned char to) -> int {
+  }
+  // Distance to the walls, exact where it matters: it is compared with R (the opening) and
+  // with tol (the residual), so cells farther than both from every edge keep "far". Blocks
+  // of cells farther than that (by their centre's distance less their half diagonal) are
+  // skipped, and the rest measure against the edges near their block only.
+  constexpr float kFar = std::numeric_limits<float>::max();
+  std::vector<float> wall_d(cell.size(), kFar);
+  {
+    const double near = std::max(R, tol) + 2 * h;
+    constexpr int kBlock = 16;
+    const double half_diag = kBlock * h * std::sqrt(2.0) / 2;
+    std::vector<std::pair<Vec2, Vec2>> edges, local;
+    for (const Ring& r : region.rings)
+      for (std::size_t i = 0; i < r.size(); ++i)
+        edges.push_back({r[i], r[(i + 1) % r.size()]});
+    auto seg_dist = [](Vec2 p, Vec2 a, Vec2 b) {
+      const Vec2 ab = b - a;
+      const double t = std::clamp(dot(p - a, ab) / std::max(norm_sq(ab), 1e-300), 0.0, 1.0);
+      return norm(p - (a + ab * t));
+    };
+    for (int bj = 0; bj < ht; bj += kBlock)
+      for (int bi = 0; bi < w; bi += kBlock) {
+        const Vec2 mid = centre(bi, bj) + Vec2{0.5 * (kBlock - 1) * h, 0.5 * (kBlock - 1) * h};
+        local.clear();
+        for (const auto& e : edges)
+          if (seg_dist(mid, e.first, e.second) <= near + half_diag) local.push_back(e);
+        if (local.empty()) continue;
+        for (int j = bj; j < std::min(ht, bj + kBlock); ++j)
+          for (int i = bi; i < std::min(w, bi + kBlock); ++i) {
+            const std::size_t k = static_cast<std::size_t>(j) * w + i;
+            if (cell[k] == 0) continue;
+            double best = std::numeric_limits<double>::infinity();
+            for (const auto& e : local)
+              best = std::min(best, seg_dist(centre(i, j), e.first, e.second));
+            if (best <= near) wall_d[k] = static_cast<float>(best);
+          }
+      }
+  }
+  // The tool disk stamped on an image: the cells whose centres lie within R that hold
+  // `from` become `to`. Each call visits, row by row, only the cells outside the previous
+  // call's disk on the same image: those inside it hold `from` no longer (nothing else
+  // writes `from` back), so the count is the brute-force one at a fraction of the cost.
+  struct Stamper {
+    std::vector<unsigned char>* img;
+    unsigned char from, to;
+    bool has_last = false;
+    Vec2 last{};
+  };
+  auto row_span = [&](Vec2 c, int j, int& i0, int& i1) {
+    const double dy = box.min.y + j * h - c.y;
+    const double half = std::sqrt(std::max(0.0, R * R - dy * dy));
+    i0 = std::max(0, static_cast<int>(std::ceil((c.x - half - box.min.x) / h)));
+    i1 = std::min(w - 1, static_cast<int>(std::floor((c.x + half - box.min.x) / h)));
+  };
+  auto rows = [&](Vec2 c, int& j0, int& j1) {
+    j0 = std::max(0, static_cast<int>(std::ceil((c.y - R - box.min.y) / h)));
+    j1 = std::min(ht - 1, static_cast<int>(std::floor((c.y + R - box.min.y) / h)));
+  };
+  auto stamp = [&](Stamper& st, Vec2 c) -> int {
+    std::vector<unsigned char>& img = *st.img;
     int changed = 0;
-    const int j0 = std::max(0, static_cast<int>(std::ceil((c.y - R - box.min.y) / h)));
-    const int j1 = std::min(ht - 1, static_cast<int>(std::floor((c.y + R - box.min.y) / h)));
-    for (int j = j0; j <= j1; ++j) {
-      const double dy = box.min.y + j * h - c.y;
-      const double half = std::sqrt(std::max(0.0, R * R - dy * dy));
-      const int i0 = std::max(0, static_cast<int>(std::ceil((c.x - half - box.min.x) / h)));
-      const int i1 = std::min(w - 1, static_cast<int>(std::floor((c.x + half - box.min.x) / h)));
+    int j0 = 0, j1 = -1, l0 = 0, l1 = -1;
+    rows(c, j0, j1);
+    if (st.has_last) rows(st.last, l0, l1);
+    auto visit = [&](int j, int i0, int i1) {
       for (int i = i0; i <= i1; ++i) {
         unsigned char& v = img[static_cast<std::size_t>(j) * w + i];
-        if (v == from) {
-          v = to;
+        if (v == st.from) {
+          v = st.to;
           ++changed;
         }
       }
+    };
+    for (int j = j0; j <= j1; ++j) {
+      int i0 = 0, i1 = -1;
+      row_span(c, j, i0, i1);
+      int a0 = 0, a1 = -1;
+      if (st.has_last && j >= l0 && j <= l1) row_span(st.last, j, a0, a1);
+      if (a0 > a1) {
+        visit(j, i0, i1);
+      } else {
+        visit(j, i0, std::min(i1, a0 - 1));
+        visit(j, std::max(i0, a1 + 1), i1);
+      }
     }
+    st.has_last = true;
+    st.last = c;
     return changed;
   };
   const std::vector<Sample> samples = floor_samples(path, 0.5 * h);
@@ -166,8 +244,10 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   // the tool's edge, or the corner material no tool position reaches) touches the ring the
   // arc is read on without being engaged.
   std::vector<unsigned char> ever = cell;
+  Stamper ever_stamper{&ever, 1, 2};
   for (const Sample& s : samples)
-    stamp(s.p, ever, 1, 2);
+    stamp(ever_stamper, s.p);
+  Stamper cut_stamper{&cell, 1, 2};
   double within = 0.0, within_any = 0.0, cutting_any = 0.0;
   // Removal measure (seed 000's definition: the material a move removes): area removed
   // over a window of path, as the stepover of a straight cut, as an angle.
@@ -219,7 +299,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     }
     if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
     last = s.p;
-    const int removed = stamp(s.p, cell, 1, 2);
+    const int removed = stamp(cut_stamper, s.p);
     if (samples_out != nullptr)
       samples_out->push_back({s.p, s.ds, sample_eng, d, s.move, removed * h * h});
     if (!s.entry) {
@@ -235,6 +315,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     rep.within_20pct_removal = within_removal / rep.removal_cutting_length_mm;
   // Opening of the pocket by the disk: union of disks at centres >= R from every wall.
   std::vector<unsigned char> reach(cell.size(), 0);
+  Stamper reach_stamper{&reach, 0, 1};
   for (int j = 0; j < ht; ++j)
     for (int i = 0; i < w; ++i) {
       const std::size_t k = static_cast<std::size_t>(j) * w + i;
@@ -247,7 +328,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
           if (cell[q] == 0 || wall_d[q] < R) edge = true;
         }
       if (edge)
-        stamp(centre(i, j), reach, 0, 1);
+        stamp(reach_stamper, centre(i, j));
       else
         reach[k] = 1;
     }
