@@ -2,7 +2,8 @@
 # Swarf's adaptive pocket against FreeCAD's adaptive clearing (libarea Adaptive2d, the engine
 # of FreeCAD's Path/CAM Adaptive operation, Debian package freecad-python3, not a Swarf
 # dependency), on the benchmark pockets, both judged by the same independent sweep
-# (bench/pocket_sweep.cpp = tests/pocket/sweep_checker.cpp at 0.05 mm). Prints one table.
+# (bench/pocket_sweep.cpp = tests/pocket/sweep_checker.cpp at 0.05 mm, or a twentieth of the
+# stepover where finer). Prints one table.
 #   bench/compare_freecad.sh [build-dir]     (default build/release)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,7 @@
 // The independent sweep itself, against closed forms: what it counts as cut and as left.
+#include <cmath>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "pocket/sweep_checker.h"
@@ -78,6 +81,41 @@ TEST(SweepChecker, TheEntrysClosingPassIsEntryAndWhatFollowsIsCutting) {
   const auto g = testing::sweep_check(box, 5.0, helix, 60.0, 0.05, 0.0);
   EXPECT_NEAR(g.cutting_length_mm, h.cutting_length_mm, 1e-9);
   EXPECT_EQ(g.slot_length_mm, h.slot_length_mm);
+}
+
+// The arc is read on a ring half a pixel outside the tool, so a pixel that is a large part
+// of the stepover reads it wide (at 0.05 mm a ø3 at 0.15 mm read 28-30 degrees where the
+// closed form is 25.8): with a pixel a twentieth of the stepover (swarf_pocket_sweep's
+// rule), a straight pass beside a straight cut reads acos(1 - s / R) within a degree and a
+// half, and the removal measure (area per length) reads the same. A slot at y = 3, then four
+// passes each 0.15 mm further up, in a 30 x 10 mm box.
+TEST(SweepChecker, APassAtAKnownStepoverReadsItsClosedFormArcWithAFinePixel) {
+  const PolygonSet box{{Ring{{0, 0}, {30, 0}, {30, 10}, {0, 10}}}};
+  const double r = 1.5, stepover = 0.15;
+  Toolpath tp;
+  for (int k = 0; k <= 4; ++k) {
+    const double y = 3.0 + k * stepover;
+    tp.moves.push_back(move_to(MoveKind::kRapid, {3, y, 5}));
+    tp.moves.push_back(move_to(MoveKind::kPlunge, {3, y, -1}));
+    tp.moves.push_back(move_to(MoveKind::kFeed, {27, y, -1}));
+    tp.moves.push_back(move_to(MoveKind::kRapid, {27, y, 5}));
+  }
+  const double closed_form = rad_to_deg(std::acos(1.0 - stepover / r));
+  std::vector<testing::SweepSample> samples;
+  const auto s = testing::sweep_check(box, r, tp, closed_form, stepover / 20.0, 0.0, &samples, 0.5);
+  // The fourth pass, away from its ends (where the tool enters and leaves the material).
+  // Not the last: the arc counts only material that some pass removes, and the ring half a
+  // pixel outside the last pass runs through what none does.
+  int n = 0;
+  for (const auto& q : samples) {
+    if (std::abs(q.position.y - (3.0 + 3 * stepover)) > 1e-9 || q.position.x < 8 ||
+        q.position.x > 22)
+      continue;
+    EXPECT_NEAR(q.engagement_deg, closed_form, 1.5) << q.position.x;
+    ++n;
+  }
+  EXPECT_GT(n, 1000);
+  EXPECT_GT(s.within_20pct_removal, 0.7);  // the slot is the fifth of the length out of band
 }
 
 }  // namespace
