@@ -8,7 +8,6 @@
 // time, lifts, the most one move at the link feed removes and the most one removes per mm). Used by
 // bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,6 +15,7 @@
 
 #include "../tests/pocket/sweep_checker.cpp"
 #include "swarf/gcode/gcode.h"
+#include "swarf/pocket/adaptive.h"
 #include "swarf/pocket/pocket_input.h"
 #include "swarf/polygon/polygon.h"
 #include "swarf/toolpath/metrics.h"
@@ -51,10 +51,7 @@ int main(int argc, char** argv) {
   // pixel / 4 to the stepover it sees: at 0.05 mm a ø3 at 5 % (0.15 mm) read 28-30 degrees
   // for a straight pass at exactly its 25.8 (random pocket 2419: 65 % within +-20 % at
   // 0.05 mm, 87 % at 0.025, 93 % at 0.0125, 95 % at 0.00625, where it settles).
-  if (pixel <= 0.0) {
-    const double stepover = 0.5 * d * (1.0 - std::cos(deg_to_rad(target)));
-    pixel = std::min(0.05, stepover / 20.0);
-  }
+  if (pixel <= 0.0) pixel = std::min(0.05, stepover_for_angle_mm(target, 0.5 * d) / 20.0);
   std::vector<testing::SweepSample> samples;
   std::vector<Vec2> residual;
   const PolygonSet region = wall_stock > 0.0 ? offset(pocket->region, -wall_stock) : pocket->region;

@@ -26,15 +26,16 @@ bool inside(const PolygonSet& s, Vec2 p) {
     in = in != inside_ring(r, p);
   return in;
 }
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp(dot(p - a, ab) / std::max(norm_sq(ab), 1e-300), 0.0, 1.0);
+  return norm(p - (a + ab * t));
+}
 double edge_distance(const PolygonSet& s, Vec2 p) {
   double best = std::numeric_limits<double>::infinity();
   for (const Ring& r : s.rings)
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Vec2 a = r[i], b = r[(i + 1) % r.size()];
-      const Vec2 ab = b - a;
-      const double t = std::clamp(dot(p - a, ab) / std::max(norm_sq(ab), 1e-300), 0.0, 1.0);
-      best = std::min(best, norm(p - (a + ab * t)));
-    }
+    for (std::size_t i = 0; i < r.size(); ++i)
+      best = std::min(best, segment_distance(p, r[i], r[(i + 1) % r.size()]));
   return best;
 }
 
@@ -164,17 +165,12 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     for (const Ring& r : region.rings)
       for (std::size_t i = 0; i < r.size(); ++i)
         edges.push_back({r[i], r[(i + 1) % r.size()]});
-    auto seg_dist = [](Vec2 p, Vec2 a, Vec2 b) {
-      const Vec2 ab = b - a;
-      const double t = std::clamp(dot(p - a, ab) / std::max(norm_sq(ab), 1e-300), 0.0, 1.0);
-      return norm(p - (a + ab * t));
-    };
     for (int bj = 0; bj < ht; bj += kBlock)
       for (int bi = 0; bi < w; bi += kBlock) {
         const Vec2 mid = centre(bi, bj) + Vec2{0.5 * (kBlock - 1) * h, 0.5 * (kBlock - 1) * h};
         local.clear();
         for (const auto& e : edges)
-          if (seg_dist(mid, e.first, e.second) <= near + half_diag) local.push_back(e);
+          if (segment_distance(mid, e.first, e.second) <= near + half_diag) local.push_back(e);
         if (local.empty()) continue;
         for (int j = bj; j < std::min(ht, bj + kBlock); ++j)
           for (int i = bi; i < std::min(w, bi + kBlock); ++i) {
@@ -182,7 +178,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
             if (cell[k] == 0) continue;
             double best = std::numeric_limits<double>::infinity();
             for (const auto& e : local)
-              best = std::min(best, seg_dist(centre(i, j), e.first, e.second));
+              best = std::min(best, segment_distance(centre(i, j), e.first, e.second));
             if (best <= near) wall_d[k] = static_cast<float>(best);
           }
       }
