@@ -65,32 +65,53 @@ std::vector<float> squared_distance_transform(const BitImage& features, bool fea
   // Columns: for a binary image the 1D transform is the squared distance to the nearest
   // feature in the column, found by one sweep down and one up, a row at a time (in memory
   // order, unlike a column-wise parabola pass). Exact: whole numbers, kept exactly in float.
+  // The sweep down leaves its distances in f itself (whole numbers below 2^24, and kFar, a
+  // power of two: exact in float), so the image is written twice and no second one is
+  // allocated (its page faults and clearing were a third of the pocket's set-up).
   constexpr int kFar = 1 << 28;
   std::vector<int> run(wz, kFar);
-  std::vector<int> down(wz * static_cast<std::size_t>(h));
-  for (int j = 0; j < h; ++j)
+  for (int j = 0; j < h; ++j) {
+    float* row = f.data() + static_cast<std::size_t>(j) * wz;
     for (int i = 0; i < w; ++i) {
-      run[static_cast<std::size_t>(i)] = features.get(i, j) == feature_value
-                                             ? 0
-                                             : std::min(kFar, run[static_cast<std::size_t>(i)] + 1);
-      down[static_cast<std::size_t>(j) * wz + static_cast<std::size_t>(i)] =
-          run[static_cast<std::size_t>(i)];
-    }
-  std::fill(run.begin(), run.end(), kFar);
-  for (int j = h - 1; j >= 0; --j)
-    for (int i = 0; i < w; ++i) {
-      const std::size_t k = static_cast<std::size_t>(j) * wz + static_cast<std::size_t>(i);
       int& r = run[static_cast<std::size_t>(i)];
-      r = down[k] == 0 ? 0 : std::min(kFar, r + 1);
-      const int d = std::min(r, down[k]);
-      f[k] = d >= kFar ? kInf : static_cast<float>(static_cast<double>(d) * d);
+      r = features.get(i, j) == feature_value ? 0 : std::min(kFar, r + 1);
+      row[i] = static_cast<float>(r);
     }
+  }
+  std::fill(run.begin(), run.end(), kFar);
+  for (int j = h - 1; j >= 0; --j) {
+    float* row = f.data() + static_cast<std::size_t>(j) * wz;
+    for (int i = 0; i < w; ++i) {
+      const int down = static_cast<int>(row[i]);
+      int& r = run[static_cast<std::size_t>(i)];
+      r = down == 0 ? 0 : std::min(kFar, r + 1);
+      const int d = std::min(r, down);
+      row[i] = d >= kFar ? kInf : static_cast<float>(static_cast<double>(d) * d);
+    }
+  }
   const int n = w;
   std::vector<double> d(static_cast<std::size_t>(n));
   std::vector<int> v(static_cast<std::size_t>(n));
   std::vector<double> z(static_cast<std::size_t>(n) + 1);
-  for (int j = 0; j < h; ++j)
-    dt1d(f.data() + static_cast<std::size_t>(j) * wz, w, 1, d, v, z);
+  // Rows: a feature pixel (0) stays 0, and no parabola from beyond one is lowest past it
+  // (from q' < p < q, (q - q')^2 + f(q') > (q - p)^2), so each run of other pixels is
+  // transformed on its own with the features that bound it: the same minima, and the rows'
+  // long feature runs (outside the pocket, islands) cost one comparison a pixel.
+  for (int j = 0; j < h; ++j) {
+    float* row = f.data() + static_cast<std::size_t>(j) * wz;
+    for (int a = 0; a < w;) {
+      if (row[a] == 0.0f) {
+        ++a;
+        continue;
+      }
+      int b = a;
+      while (b + 1 < w && row[b + 1] != 0.0f)
+        ++b;
+      const int lo = std::max(0, a - 1), hi = std::min(w - 1, b + 1);
+      dt1d(row + lo, hi - lo + 1, 1, d, v, z);
+      a = b + 2;
+    }
+  }
   return f;
 }
 

@@ -56,6 +56,28 @@ TEST(DistanceTransform, ExactSquaredDistancesToTheNearestFeature) {
   }
 }
 
+// The rows are transformed run by run between features: rows with none, features only at
+// the row's ends, or a single free pixel between two, against brute force.
+TEST(DistanceTransform, RowsWithFeaturesAtTheirEndsOrNoneAtAll) {
+  BitImage img(9, 5);
+  img.set(0, 1, true);
+  img.set(8, 1, true);  // row 1: features at both ends
+  img.set(3, 2, true);
+  img.set(5, 2, true);  // row 2: one free pixel between two features
+  for (int i = 0; i < 9; ++i)
+    img.set(i, 4, i != 6);  // row 4: a single free pixel; rows 0 and 3 have no feature
+  const std::vector<float> d = squared_distance_transform(img, true);
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 9; ++i)
+      ASSERT_EQ(static_cast<long>(d[static_cast<std::size_t>(j) * 9 + static_cast<std::size_t>(i)]),
+                brute_sq(img, i, j, true))
+          << i << "," << j;
+  // No feature anywhere: every pixel is far (the transform's infinity), none is 0.
+  const std::vector<float> none = squared_distance_transform(BitImage(7, 3), true);
+  for (float v : none)
+    EXPECT_GT(v, 1e19f);
+}
+
 TEST(DistanceTransform, DiskDilationIsTheThresholdedTransform) {
   for (unsigned seed : {4u, 5u}) {
     // Width not a multiple of 64 and more than one word: the word-wise boundary test sees
