@@ -66,6 +66,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
   ap.wall_scallop_mm = num(p, "wall_scallop");
+  ap.cut_map = in.wants_report;  // only the report's picture reads it
   auto r = adaptive_pocket(*pocket, *in.tool, ap, in.ctx ? *in.ctx : default_context());
   if (!r) return r.status();
   OperationOutput out;

@@ -102,7 +102,8 @@ bool gouges_exactly(const Model& m, Vec2 c) {
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
 void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
-                AdaptiveResult& res, std::optional<pocket::PixelStock>* stock_out = nullptr) {
+                bool want_map, AdaptiveResult& res,
+                std::optional<pocket::PixelStock>* stock_out = nullptr) {
   const Entry& e = entries.front();
   // The material: what the free pixel centres reach, and what the tip visits and the scallop
   // rides' dabs reach beyond them (the pocket pixels their disks cover, as the stock's own
@@ -124,17 +125,22 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
       whole.stamp(v, add, &material);
   }
   pocket::PixelStock stock(m.grid, material, m.forbidden, m.radius_mm, &m.clearance_sq);
+  // The cut map, when asked for (AdaptiveParams::cut_map): without it the cuts tag nothing.
   CutMap& map = res.cut_map;
-  map.origin = m.grid.origin;
-  map.pixel_mm = m.h;
-  map.width = m.grid.width;
-  map.height = m.grid.height;
-  map.cells.assign(static_cast<std::size_t>(map.width) * map.height, 0u);
-  for (int j = 0; j < map.height; ++j)
-    for (int i = 0; i < map.width; ++i)
-      if (m.pocket.get(i, j)) map.cells[m.grid.index(i, j)] = 1u;
+  map = CutMap{};
+  if (want_map) {
+    map.origin = m.grid.origin;
+    map.pixel_mm = m.h;
+    map.width = m.grid.width;
+    map.height = m.grid.height;
+    map.cells.assign(static_cast<std::size_t>(map.width) * map.height, 0u);
+    for (int j = 0; j < map.height; ++j)
+      for (int i = 0; i < map.width; ++i)
+        if (m.pocket.get(i, j)) map.cells[m.grid.index(i, j)] = 1u;
+  }
   Recorder rec{&map.cells, map.width, 2u};
-  pocket::cut_entry(stock, m, e, record, &rec);
+  const pocket::CutVisitor tag = want_map ? record : nullptr;
+  pocket::cut_entry(stock, m, e, tag, &rec);
   res.steps.clear();
   res.gouge_steps = 0;
   Vec2 prev_dir{0, 0};
@@ -146,9 +152,9 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
       // A later entry's hole is an entry's in the picture too, not a cut of no engagement
       // (its step removes nothing by its own count; it showed blue before).
       rec.tag = 2u;
-      pocket::cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])], record, &rec);
+      pocket::cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])], tag, &rec);
     } else if (lp.jump[k]) {
-      removed = stock.stamp(b, record, &rec);
+      removed = stock.stamp(b, tag, &rec);
       if (gouges_exactly(m, b)) ++res.gouge_steps;
     } else {
       const double len = distance(a, b);
@@ -157,7 +163,8 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
       for (int s = 1; s <= n; ++s) {
         const Vec2 q = a + (b - a) * (static_cast<double>(s) / n);
         if (gouges_exactly(m, q)) ++res.gouge_steps;
-        removed += stock.cut_tagging(p, q, map.cells.data(), map.width, rec.tag);
+        removed += want_map ? stock.cut_tagging(p, q, map.cells.data(), map.width, rec.tag)
+                            : stock.cut(p, q);
         p = q;
       }
     }
@@ -416,9 +423,9 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   res.trochoid_groups = lp.trochoid_groups;
   res.boundary_groups = lp.boundary_groups;
   std::optional<pocket::PixelStock> after;
-  resimulate(m, order, lp, res, &after);
+  resimulate(m, order, lp, params.cut_map, res, &after);
   if (pocket::ride_walls_over_scallops(m, *after, params.wall_scallop_mm, lp))
-    resimulate(m, order, lp, res);
+    resimulate(m, order, lp, params.cut_map, res);
 
   // Output simplification: runs between kind changes and jumps, Douglas-Peucker. A chord may
   // pass up to the tolerance inside the curve it replaces, i.e. towards an island the path

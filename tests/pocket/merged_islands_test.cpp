@@ -143,6 +143,35 @@ TEST(MergedIslands, EachAreasEntryHoleIsAnEntryInTheCutMap) {
   EXPECT_GT(right, disk_px);
 }
 
+// Without the cut map (the CLI asks for it only with --report) the path is the same to the
+// bit and the map is left empty; with it, every pocket pixel is tagged (none left 0).
+TEST(MergedIslands, TheCutMapIsOptionalAndChangesNothingElse) {
+  auto p = make_pocket(rect(0, 0, 50, 40), {rect(20, -5, 30, 45)}, "rib.json");
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  AdaptiveParams with = testing::params_3mm_deep(1.0);
+  AdaptiveParams without = with;
+  without.cut_map = false;
+  auto a = adaptive_pocket(*p, testing::flat_mill(6.0), with);
+  auto b = adaptive_pocket(*p, testing::flat_mill(6.0), without);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_TRUE(b->cut_map.cells.empty());
+  EXPECT_EQ(b->cut_map.width, 0);
+  ASSERT_EQ(a->cut_map.cells.size(), static_cast<std::size_t>(a->cut_map.width) *
+                                         static_cast<std::size_t>(a->cut_map.height));
+  std::size_t pocket_cells = 0;
+  for (std::uint32_t c : a->cut_map.cells)
+    pocket_cells += c != 0u ? 1 : 0;
+  EXPECT_GT(static_cast<double>(pocket_cells) * a->cut_map.pixel_mm * a->cut_map.pixel_mm,
+            0.9 * (50.0 * 40.0 - 10.0 * 40.0));
+  GcodeOptions o;
+  const Toolpath ta[] = {a->toolpath}, tb[] = {b->toolpath};
+  EXPECT_EQ(write_gcode(ta, o), write_gcode(tb, o));
+  ASSERT_EQ(a->steps.size(), b->steps.size());
+  for (std::size_t k = 0; k < a->steps.size(); ++k)
+    ASSERT_EQ(a->steps[k].engagement_px, b->steps[k].engagement_px) << "step " << k;
+  EXPECT_EQ(a->material_left_mm2, b->material_left_mm2);
+}
+
 TEST(MergedIslands, OverlappingIslandsAreCutRoundAsOne) {
   // The union of the two squares, clockwise: an island.
   const Ring both = {{10, 10}, {10, 25}, {20, 25}, {20, 30},

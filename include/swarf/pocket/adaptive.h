@@ -82,6 +82,9 @@ struct AdaptiveParams {
   double wall_scallop_mm = 0.1;
   /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
   double simplify_tolerance_mm = 0.0;
+  /// Fill AdaptiveResult::cut_map (the report picture's bitmap, 4 bytes a pixel: 10 MB for
+  /// the benchmark L). false leaves it empty; the path is the same.
+  bool cut_map = true;
 };
 
 /// Checks ranges; the message names the parameter and its unit.
