@@ -67,7 +67,8 @@ std::vector<float> squared_distance_transform(const BitImage& features, bool fea
   // order, unlike a column-wise parabola pass). Exact: whole numbers, kept exactly in float.
   // The sweep down leaves its distances in f itself (whole numbers below 2^24, and kFar, a
   // power of two: exact in float), so the image is written twice and no second one is
-  // allocated (its page faults and clearing were a third of the pocket's set-up).
+  // allocated (on the benchmark L its clearing and page faults were about half of the whole
+  // run's page faults).
   constexpr int kFar = 1 << 28;
   std::vector<int> run(wz, kFar);
   for (int j = 0; j < h; ++j) {

@@ -143,8 +143,9 @@ TEST(MergedIslands, EachAreasEntryHoleIsAnEntryInTheCutMap) {
   EXPECT_GT(right, disk_px);
 }
 
-// Without the cut map (the CLI asks for it only with --report) the path is the same to the
-// bit and the map is left empty; with it, every pocket pixel is tagged (none left 0).
+// Without the cut map (the CLI asks for it only with --report) the path, the steps'
+// engagement and the material left are the same to the bit and the map is left empty; with
+// it, the map covers the pocket (its non-zero cells hold at least 90 % of the pocket's area).
 TEST(MergedIslands, TheCutMapIsOptionalAndChangesNothingElse) {
   auto p = make_pocket(rect(0, 0, 50, 40), {rect(20, -5, 30, 45)}, "rib.json");
   ASSERT_TRUE(p.ok()) << p.status().to_string();
