@@ -94,6 +94,23 @@ struct RawPath {
 Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock,
                                   std::vector<Entry>& entries, const Context& ctx);
 
+/// Crumbs this close to the walls (beyond the wall stock) are not put back: the stated
+/// residual tolerance leaves them, and chasing them cost the benchmark L three lifts.
+constexpr double kWallCrumbMm = 0.25;
+
+/// Where to resume after the boundary round ended with reachable material left (our
+/// addition: the paper stops, which leaves material behind islands or beyond a narrow
+/// neck). Tries the remaining material pixels nearest to `from` that are not in `given_up`;
+/// a resume point is a free, already cleared centre just out of reach of the pixel, facing
+/// it. Pixels for which no such point exists are added to `given_up` (so the search
+/// terminates). They stay material: a path that passes them still sees and cuts them (when
+/// they were taken out of the stock instead, a later pass went through them as if through
+/// cleared space, and the final path, re-simulated, cut them in a full slot).
+/// `window_mm` > 0 limits the search to the material within that of `from` (0: the whole
+/// stock).
+bool find_resume(const Model& model, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir,
+                 int& pi, int& pj, BitImage& given_up, double window_mm = 0.0);
+
 /// The linked path: points and per segment its kind; `jump[i]` marks a segment travelled
 /// by retracting, moving at the clearance plane and coming down again.
 struct LinkedPath {
