@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <sstream>
 
 #include "pocket/adaptive_internal.h"
 #include "pocket/distance_transform.h"
@@ -186,16 +185,12 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
   if (stock_out != nullptr) stock_out->emplace(std::move(stock));
 }
 
-double link_feed(const AdaptiveParams& p) {
-  return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
-}
-
 // The link costs of the output (path_postprocess.cpp weighs links against retracts with
 // them, and the plunge candidates are timed with them).
 pocket::LinkCosts link_costs(const AdaptiveParams& p) {
   pocket::LinkCosts c;
   c.feed_mm_min = p.feed_mm_min;
-  c.link_feed_mm_min = link_feed(p);
+  c.link_feed_mm_min = pocket::link_feed_mm_min(p);
   c.rapid_mm_min = p.rapid_mm_min;
   c.lift_mm = p.clearance_z_mm - (p.top_z_mm - p.depth_mm);
   // A retract comes down at the plunge feed from 1 mm above the previous layer's floor.
@@ -490,8 +485,8 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // times the cutting feed, a step removing 1 / k^2 of a target step makes the chip of a
   // target step at the cutting feed (the default 5x: 4 %, which is cut_px, the threshold
   // below which a step counts as a link at all).
-  const double graze_px =
-      std::min(m.cut_px, m.target_px * std::pow(params.feed_mm_min / link_feed(params), 2));
+  const double graze_px = std::min(
+      m.cut_px, m.target_px * std::pow(params.feed_mm_min / pocket::link_feed_mm_min(params), 2));
   // What each kept move (keep[q - 1] -> keep[q]) removes in the re-simulation.
   std::vector<KeptMove> kept(keep.size());
   for (std::size_t q = 1; q < keep.size(); ++q) {
@@ -634,15 +629,15 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
               make_move(MoveKind::kFeed, to_vec3(neck[k], z), params.feed_mm_min, true));
         }
         for (std::size_t k = 1; k < neck.size(); ++k) {
-          tp.moves.push_back(
-              make_move(MoveKind::kFeed, to_vec3(neck[k], z), link_feed(params), false));
+          tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(neck[k], z),
+                                       pocket::link_feed_mm_min(params), false));
         }
         q = n.last;
         continue;
       }
       const KeptMove& k = kept[q];
-      Move mv =
-          make_move(MoveKind::kFeed, end, k.fast ? link_feed(params) : params.feed_mm_min, !k.link);
+      Move mv = make_move(MoveKind::kFeed, end,
+                          k.fast ? pocket::link_feed_mm_min(params) : params.feed_mm_min, !k.link);
       mv.engagement_deg = static_cast<float>(k.deg);
       // The pieces, split where the link feed starts and ends: a link-feed move's margins
       // next to cutting moves run at the cutting feed.
@@ -667,7 +662,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       for (const auto& [stop, v] : stops) {
         Move piece = mv;
         const bool fast = k.fast && prev >= fast_from - 1e-9 && stop <= fast_to + 1e-9;
-        piece.feed_mm_min = fast ? link_feed(params) : params.feed_mm_min;
+        piece.feed_mm_min = fast ? pocket::link_feed_mm_min(params) : params.feed_mm_min;
         piece.end = to_vec3(v, z);
         tp.moves.push_back(piece);
         prev = stop;
@@ -679,78 +674,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   }
   res.retracts_per_layer = retracts / layers;
   return res;
-}
-
-AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
-  AdaptiveSummary s;
-  std::vector<std::pair<double, double>> eng;  // angle, length
-  const double cut_px = std::max(2.0, 0.04 * r.target_engagement_px);
-  for (const AdaptiveStep& st : r.steps) {
-    if (st.plunged) {
-      // Plunged through, then passed in the air: neither a cut nor a link of the path.
-      s.plunged_length_mm += st.length_mm;
-    } else if (st.engagement_px > cut_px) {
-      s.cutting_length_mm += st.length_mm;
-      eng.push_back({st.engagement_deg, st.length_mm});
-      s.max_deviation_deg = std::max(s.max_deviation_deg, st.deviation_deg);
-      if (std::abs(st.engagement_deg - r.target_engagement_deg) <= 0.2 * r.target_engagement_deg)
-        s.within_20pct += st.length_mm;
-    } else {
-      s.air_length_mm += st.length_mm;
-    }
-  }
-  const double layers = std::max(1, r.layers);
-  s.time_s = ((s.cutting_length_mm + s.plunged_length_mm) / p.feed_mm_min +
-              (s.air_length_mm + s.plunged_length_mm) / link_feed(p)) *
-             layers * 60.0;
-  if (s.cutting_length_mm > 0) s.within_20pct /= s.cutting_length_mm;
-  if (!eng.empty()) {
-    double sum = 0.0;
-    for (auto [a, l] : eng)
-      sum += a * l;
-    s.engagement_mean_deg = sum / s.cutting_length_mm;
-    std::sort(eng.begin(), eng.end());
-    auto pct = [&](double q) {
-      double acc = 0.0;
-      for (auto [a, l] : eng) {
-        acc += l;
-        if (acc >= q * s.cutting_length_mm) return a;
-      }
-      return eng.back().first;
-    };
-    s.engagement_p5_deg = pct(0.05);
-    s.engagement_p95_deg = pct(0.95);
-  }
-  return s;
-}
-
-std::string summary_line(const AdaptiveSummary& s) {
-  char b[320];
-  std::snprintf(b, sizeof b,
-                "cutting %.1f mm, air %.1f mm, time %.1f s, engagement mean/p5/p95 "
-                "%.1f/%.1f/%.1f deg (%.0f %% within +-20 %%), max deviation %.1f deg",
-                s.cutting_length_mm, s.air_length_mm, s.time_s, s.engagement_mean_deg,
-                s.engagement_p5_deg, s.engagement_p95_deg, 100.0 * s.within_20pct,
-                s.max_deviation_deg);
-  return b;
-}
-
-std::string steps_csv(const AdaptiveResult& r) {
-  std::ostringstream o;
-  o << "index,x,y,kind,engagement_px,engagement_deg,deviation_deg,length_mm\n";
-  char b[256];
-  for (std::size_t k = 0; k < r.steps.size(); ++k) {
-    const AdaptiveStep& s = r.steps[k];
-    const char* kind = s.plunged                       ? "neck"
-                       : s.kind == StepKind::kCut      ? "cut"
-                       : s.kind == StepKind::kBoundary ? "boundary"
-                                                       : "link";
-    std::snprintf(b, sizeof b, "%zu,%.4f,%.4f,%s,%d,%.2f,%.2f,%.4f\n", k, s.position.x,
-                  s.position.y, kind, s.engagement_px, s.engagement_deg, s.deviation_deg,
-                  s.length_mm);
-    o << b;
-  }
-  return o.str();
 }
 
 }  // namespace swarf

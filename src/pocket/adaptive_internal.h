@@ -14,6 +14,11 @@
 
 namespace swarf::pocket {
 
+/// The feed of keep-tool-down links: AdaptiveParams::link_feed_mm_min, or the rapid rate.
+inline double link_feed_mm_min(const AdaptiveParams& p) {
+  return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
+}
+
 /// Everything derived from pocket, tool and parameters before the first move.
 struct Model {
   double radius_mm = 0.0;    ///< tool radius
