@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
+#include <vector>
 
 #include "pocket/geometry.h"
 #include "swarf/pocket/pocket_input.h"
@@ -283,6 +285,59 @@ TEST(PocketInput, DxfOpenChainIsRejectedWithItsEnds) {
   EXPECT_EQ(p.status().code(), Error::kBadInput);
   EXPECT_NE(p.status().message().find("open outline"), std::string::npos);
   EXPECT_NE(p.status().message().find("(0, 0)"), std::string::npos) << p.status().message();
+}
+
+// One drawing, three formats: the JSON's coordinates, an SVG of the same loops with y
+// negated (the SVG reader flips y so that the drawing keeps its look) and a DXF of
+// LWPOLYLINEs give the same pocket to the last bit (same rings, same order, same start
+// points), so the same toolpath: a user may export from any program.
+TEST(PocketInput, TheSameDrawingAsJsonSvgAndDxfGivesTheSamePocket) {
+  const std::vector<Ring> rings = {
+      {{0.125, 0.5}, {80.3333, 0.5}, {80.3333, 30.75}, {35.1, 30.75}, {35.1, 70.2}, {0.125, 70.2}},
+      {{10.5, 10.25}, {10.5, 18.125}, {20.75, 18.125}, {20.75, 10.25}},  // clockwise
+      {{50.0, 12.0}, {62.5, 14.0}, {58.0, 22.0}}};  // counter-clockwise: each is turned round
+  std::ostringstream json, svg, dxf;
+  for (std::ostringstream* o : {&json, &svg, &dxf})
+    o->precision(17);
+  json << "{\"outer\": [";
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\">\n";
+  dxf << "0\nSECTION\n2\nENTITIES\n";
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    json << (k == 1 ? "], \"islands\": [[" : k > 1 ? ", [" : "");
+    svg << "<polygon points=\"";
+    dxf << "0\nLWPOLYLINE\n8\n0\n90\n" << rings[k].size() << "\n70\n1\n";
+    for (std::size_t q = 0; q < rings[k].size(); ++q) {
+      const Vec2 v = rings[k][q];
+      json << (q ? ", [" : "[") << v.x << ", " << v.y << "]";
+      svg << (q ? " " : "") << v.x << "," << -v.y;
+      dxf << "10\n" << v.x << "\n20\n" << v.y << "\n";
+    }
+    json << (k == 0 ? "" : "]");
+    svg << "\"/>\n";
+  }
+  json << "]}";
+  svg << "</svg>\n";
+  dxf << "0\nENDSEC\n0\nEOF\n";
+  auto a = parse_pocket_json(json.str(), "p.json");
+  auto b = parse_pocket_svg(svg.str(), "p.svg");
+  auto c = parse_pocket_dxf(dxf.str(), "p.dxf");
+  ASSERT_TRUE(a.ok()) << a.status().to_string() << "\n" << json.str();
+  ASSERT_TRUE(b.ok()) << b.status().to_string();
+  ASSERT_TRUE(c.ok()) << c.status().to_string();
+  ASSERT_EQ(a->region.rings.size(), 3u);
+  EXPECT_EQ(a->island_count(), 2u);
+  for (const Pocket* other : {&b.value(), &c.value()}) {
+    ASSERT_EQ(other->region.rings.size(), a->region.rings.size()) << other->source;
+    for (std::size_t k = 0; k < a->region.rings.size(); ++k) {
+      const Ring& x = a->region.rings[k];
+      const Ring& y = other->region.rings[k];
+      ASSERT_EQ(x.size(), y.size()) << other->source << " ring " << k;
+      for (std::size_t q = 0; q < x.size(); ++q) {
+        EXPECT_EQ(x[q].x, y[q].x) << other->source << " ring " << k << " point " << q;
+        EXPECT_EQ(x[q].y, y[q].y) << other->source << " ring " << k << " point " << q;
+      }
+    }
+  }
 }
 
 }  // namespace
