@@ -485,8 +485,8 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // times the cutting feed, a step removing 1 / k^2 of a target step makes the chip of a
   // target step at the cutting feed (the default 5x: 4 %, which is cut_px, the threshold
   // below which a step counts as a link at all).
-  const double graze_px = std::min(
-      m.cut_px, m.target_px * std::pow(params.feed_mm_min / pocket::link_feed_mm_min(params), 2));
+  const double graze_px =
+      std::min(m.cut_px, m.target_px * std::pow(params.feed_mm_min / costs.link_feed_mm_min, 2));
   // What each kept move (keep[q - 1] -> keep[q]) removes in the re-simulation.
   std::vector<KeptMove> kept(keep.size());
   for (std::size_t q = 1; q < keep.size(); ++q) {
@@ -629,15 +629,15 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
               make_move(MoveKind::kFeed, to_vec3(neck[k], z), params.feed_mm_min, true));
         }
         for (std::size_t k = 1; k < neck.size(); ++k) {
-          tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(neck[k], z),
-                                       pocket::link_feed_mm_min(params), false));
+          tp.moves.push_back(
+              make_move(MoveKind::kFeed, to_vec3(neck[k], z), costs.link_feed_mm_min, false));
         }
         q = n.last;
         continue;
       }
       const KeptMove& k = kept[q];
       Move mv = make_move(MoveKind::kFeed, end,
-                          k.fast ? pocket::link_feed_mm_min(params) : params.feed_mm_min, !k.link);
+                          k.fast ? costs.link_feed_mm_min : params.feed_mm_min, !k.link);
       mv.engagement_deg = static_cast<float>(k.deg);
       // The pieces, split where the link feed starts and ends: a link-feed move's margins
       // next to cutting moves run at the cutting feed.
@@ -662,7 +662,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       for (const auto& [stop, v] : stops) {
         Move piece = mv;
         const bool fast = k.fast && prev >= fast_from - 1e-9 && stop <= fast_to + 1e-9;
-        piece.feed_mm_min = fast ? pocket::link_feed_mm_min(params) : params.feed_mm_min;
+        piece.feed_mm_min = fast ? costs.link_feed_mm_min : params.feed_mm_min;
         piece.end = to_vec3(v, z);
         tp.moves.push_back(piece);
         prev = stop;
