@@ -306,22 +306,8 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     }
     return true;
   };
-  // Calls fn(j, i0, i1) for each row span of the pixels whose centres lie within
-  // `radius_mm` of c.
-  auto disk_rows = [&](Vec2 c, double radius_mm, auto&& fn) {
-    const Vec2 q = m.grid.to_px(c);
-    const double r = radius_mm / m.h;
-    const int j0 = std::max(0, static_cast<int>(std::ceil(q.y - r)));
-    const int j1 = std::min(m.grid.height - 1, static_cast<int>(std::floor(q.y + r)));
-    for (int j = j0; j <= j1; ++j) {
-      const double half = std::sqrt(std::max(0.0, r * r - (j - q.y) * (j - q.y)));
-      const int i0 = std::max(0, static_cast<int>(std::ceil(q.x - half)));
-      const int i1 = std::min(m.grid.width - 1, static_cast<int>(std::floor(q.x + half)));
-      if (i0 <= i1) fn(j, i0, i1);
-    }
-  };
   auto give_up_disk = [&](Vec2 c) {
-    disk_rows(c, m.radius_mm, [&](int j, int i0, int i1) {
+    for_disk_rows(m.grid, c, m.radius_mm, [&](int j, int i0, int i1) {
       for (int i = i0; i <= i1; ++i)
         if (stock.material().get(i, j)) give_up(i, j);
     });
@@ -350,7 +336,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   };
   // Clears `given_up` in the disk of `radius_mm` round `c`: that material is tried again.
   auto reopen_disk = [&](Vec2 c, double radius_mm) {
-    disk_rows(c, radius_mm, [&](int j, int i0, int i1) { given_up.clear(j, i0, i1); });
+    for_disk_rows(m.grid, c, radius_mm, [&](int j, int i0, int i1) { given_up.clear(j, i0, i1); });
   };
   Chooser chooser(m, stock);
   Vec2 pos = entry.start;

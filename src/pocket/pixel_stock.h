@@ -47,6 +47,22 @@ void for_disk(const Grid& grid, Vec2 c, double r, Fn&& fn) {
   }
 }
 
+/// for_disk by rows: calls fn(j, i0, i1) for each row span [i0, i1] of the pixels whose
+/// centres lie within r of c (for work done a row span at a time, as BitImage::clear).
+template <class Fn>
+void for_disk_rows(const Grid& grid, Vec2 c, double r, Fn&& fn) {
+  const Vec2 q = grid.to_px(c);
+  const double rp = r / grid.h;
+  const int j0 = std::max(0, static_cast<int>(std::ceil(q.y - rp)));
+  const int j1 = std::min(grid.height - 1, static_cast<int>(std::floor(q.y + rp)));
+  for (int j = j0; j <= j1; ++j) {
+    const double half = std::sqrt(std::max(0.0, rp * rp - (j - q.y) * (j - q.y)));
+    const int i0 = std::max(0, static_cast<int>(std::ceil(q.x - half)));
+    const int i1 = std::min(grid.width - 1, static_cast<int>(std::floor(q.x + half)));
+    if (i0 <= i1) fn(j, i0, i1);
+  }
+}
+
 class BitImage {
  public:
   BitImage() = default;
