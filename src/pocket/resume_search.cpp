@@ -144,7 +144,7 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       const double ring = m.radius_mm + 0.5 * (1 + ring_k) * m.step_mm;
       for (std::size_t k = 0; k < tries; ++k) {
         const Vec2 q = m.grid.to_world(px[k].i, px[k].j);
-        for (int a = 0; a<360; a += window_mm> 0.0 ? 30 : 15) {
+        for (int a = 0; a < 360; a += (window_mm > 0.0 ? 30 : 15)) {
           const Vec2 u = kRingDirs[static_cast<std::size_t>(a / 15)];
           const Vec2 c = q + u * ring;
           if (ring_k > 0) {
