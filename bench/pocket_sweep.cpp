@@ -109,10 +109,12 @@ int main(int argc, char** argv) {
   std::printf(
       "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
       "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d, "
-      "linkcut %.3f mm2 over %.2f mm, densest %.3f mm (%.2f mm to %.3f, %.3f), pixel %.4f mm\n",
+      "linkcut %.3f mm2 over %.2f mm, densest %.3f mm (%.2f mm to %.3f, %.3f), climb %.1f %%, "
+      "reversals %d (%.1f per m), pixel %.4f mm\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
       100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
       s.slot_length_mm, m.machining_time_s, static_cast<int>(m.lift_offs), link_cut, link_len,
-      densest, move_len[dense_move], dense_at.x, dense_at.y, pixel);
+      densest, move_len[dense_move], dense_at.x, dense_at.y, 100 * s.climb_share, s.reversals,
+      s.floor_length_mm > 0 ? 1000.0 * s.reversals / s.floor_length_mm : 0.0, pixel);
   return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <vector>
 
@@ -45,6 +46,7 @@ struct Sample {
   double ds;
   bool entry;
   std::size_t move = 0;  ///< index in the toolpath's moves
+  bool rapid = false;    ///< a G0 along the floor: read for reversals only
 };
 
 // Points along the floor pass every `step` mm.
@@ -70,6 +72,16 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
     at = m.end;
     if (std::abs(m.end.z - zmin) > 1e-6 || m.kind == MoveKind::kRapid) {
       closing = Closing::kNone;
+      // A rapid along the floor (another generator's keep-tool-down link) is motion all
+      // the same: sampled for the reversals only.
+      const double len = norm(m.end.xy() - from.xy());
+      if (m.kind == MoveKind::kRapid && std::abs(m.end.z - zmin) <= 1e-6 &&
+          std::abs(from.z - zmin) <= 1e-6 && len > 1e-12) {
+        const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+        for (int k = 1; k <= n; ++k)
+          out.push_back({from.xy() + (m.end.xy() - from.xy()) * (static_cast<double>(k) / n),
+                         (m.end.xy() - from.xy()) / len, len / n, false, mi, true});
+      }
       continue;
     }
     if (std::abs(from.z - zmin) > 1e-6) {
@@ -249,6 +261,12 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   // over a window of path, as the stepover of a straight cut, as an angle.
   double win_len = 0.0, win_area = 0.0, within_removal = 0.0;
   Vec2 last{1e300, 1e300};
+  double climb_mm = 0.0, one_sided_mm = 0.0;
+  // The floor pass's headings over the last kTurnWindowMm of a connected stretch: a
+  // heading more than kReversalDeg from the oldest one there is a reversal.
+  constexpr double kTurnWindowMm = 1.0, kReversalDeg = 135.0;
+  std::deque<std::pair<double, Vec2>> window;  // (path length so far, heading)
+  double along = 0.0;
   auto flush = [&] {
     if (win_len <= 0.0) return;
     const double stepover = win_area / win_len;
@@ -265,9 +283,9 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     const double gouge = inside(region, s.p) ? R - d : R + d;
     rep.max_gouge_mm = std::max(rep.max_gouge_mm, gouge);
     double sample_eng = -1.0;
-    if (!s.entry) {
+    if (!s.entry && !s.rapid) {
       // Engagement: front half of a circle just outside the tool, 1 degree apart.
-      int n = 0, n_any = 0;
+      int n = 0, n_any = 0, n_left = 0;
       const double rr = R + 0.5 * h;
       const double base = std::atan2(s.dir.y, s.dir.x);
       for (int k = -89; k <= 90; ++k) {
@@ -277,7 +295,10 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
         if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1) {
           ++n_any;
-          if (ever[static_cast<std::size_t>(j) * w + i] == 2) ++n;
+          if (ever[static_cast<std::size_t>(j) * w + i] == 2) {
+            ++n;
+            n_left += k > 0 ? 1 : 0;  // counter-clockwise of the heading: its left
+          }
         }
       }
       if (n_any > 2) {
@@ -291,10 +312,32 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         if (std::abs(eng - target_deg) <= 0.2 * target_deg) within += s.ds;
         rep.max_engagement_deg = std::max(rep.max_engagement_deg, eng);
         if (eng >= 170.0) rep.slot_length_mm += s.ds;
+        const int n_right = n - n_left;
+        if (3 * std::max(n_left, n_right) >= 2 * n) {
+          one_sided_mm += s.ds;
+          climb_mm += n_right > n_left ? s.ds : 0.0;
+        }
       }
     }
-    if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
+    // Reversals, over connected stretches of the floor pass (entries break them).
+    if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) {
+      window.clear();
+    } else {
+      rep.floor_length_mm += s.ds;
+      along += s.ds;
+      window.push_back({along, s.dir});
+      while (window.front().first < along - kTurnWindowMm)
+        window.pop_front();
+      const double turn =
+          rad_to_deg(std::acos(std::clamp(dot(window.front().second, s.dir), -1.0, 1.0)));
+      if (turn > kReversalDeg) {
+        ++rep.reversals;
+        window.clear();
+      }
+    }
+    if (s.entry || s.rapid || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
     last = s.p;
+    if (s.rapid) continue;
     const int removed = stamp(cut_stamper, s.p);
     if (samples_out != nullptr)
       samples_out->push_back({s.p, s.ds, sample_eng, d, s.move, removed * h * h});
@@ -307,6 +350,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   flush();
   if (rep.cutting_length_mm > 0) rep.within_20pct = within / rep.cutting_length_mm;
   if (cutting_any > 0) rep.within_20pct_any_material = within_any / cutting_any;
+  if (one_sided_mm > 0) rep.climb_share = climb_mm / one_sided_mm;
   if (rep.removal_cutting_length_mm > 0)
     rep.within_20pct_removal = within_removal / rep.removal_cutting_length_mm;
   // Opening of the pocket by the disk: union of disks at centres >= R from every wall.

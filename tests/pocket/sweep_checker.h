@@ -32,6 +32,16 @@ struct SweepReport {
   /// checker pixel of a hair it leaves, and the full corner arc where the tool sits tangent
   /// to both walls of a corner).
   double within_20pct_any_material = 0.0;
+  /// Milling side: of the cutting length whose contact lies mostly (two thirds or more of
+  /// the arc) on one side of the motion, the share with the material on the right, which is
+  /// climb milling for a clockwise (M3) spindle. Slot-like contact, even on both sides, is
+  /// in neither. 1 when nothing is one-sided.
+  double climb_share = 1.0;
+  /// Sharp turns of the floor pass, cutting or not: places where its heading turns by more
+  /// than 135 degrees within 1 mm of path (the machine stops there and goes back). One turn
+  /// counts once.
+  int reversals = 0;
+  double floor_length_mm = 0.0;  ///< the floor pass's length, links at the floor included
 };
 
 /// One floor-pass sample of the sweep, for diagnosis (where the engagement leaves its band).
@@ -44,10 +54,10 @@ struct SweepSample {
   double removed_mm2 = 0.0;       ///< material the disk removes here
 };
 
-/// region: outer ring then islands (or several such parts; even-odd). The floor pass is the moves at the lowest z of the
-/// program; helix, ramp and plunge moves and the arcs at the bottom of a helix are the
-/// entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a wall is
-/// not counted as residual. residual_out: the centres of the residual's pixels (diagnosis).
+/// region: outer ring then islands (or several such parts; even-odd). The floor pass is the moves
+/// at the lowest z of the program; helix, ramp and plunge moves and the arcs at the bottom of a
+/// helix are the entry. pixel_mm: checker resolution; residual_tol_mm: material this close to a
+/// wall is not counted as residual. residual_out: the centres of the residual's pixels (diagnosis).
 SweepReport sweep_check(const PolygonSet& region, double tool_radius_mm, const Toolpath& path,
                         double target_engagement_deg, double pixel_mm, double residual_tol_mm,
                         std::vector<SweepSample>* samples = nullptr, double removal_window_mm = 0.5,

@@ -120,5 +120,60 @@ TEST(SweepChecker, APassAtAKnownStepoverReadsItsClosedFormArcWithAFinePixel) {
   EXPECT_NEAR(s.within_20pct_removal, 0.8, 0.02);
 }
 
+// The milling side: a slot along the bottom wall of a 40 x 20 box (contact on both sides:
+// neither), then three passes each 2 mm higher, the new material above the tool. Going -x
+// the material is on the right of the motion (climb with an M3 spindle), going +x on the
+// left (conventional). Two climb passes and one conventional: two thirds climb. The
+// conventional pass run the other way: all climb.
+TEST(SweepChecker, ClimbShareReadsWhichSideOfTheMotionTheMaterialIsOn) {
+  const PolygonSet box{{Ring{{0, 0}, {40, 0}, {40, 20}, {0, 20}}}};
+  auto program = [](bool third_pass_climbs) {
+    Toolpath tp;
+    auto pass = [&](Vec2 from, Vec2 to) {
+      tp.moves.push_back(move_to(MoveKind::kRapid, {from.x, from.y, 5}));
+      tp.moves.push_back(move_to(MoveKind::kPlunge, {from.x, from.y, -1}));
+      tp.moves.push_back(move_to(MoveKind::kFeed, {to.x, to.y, -1}));
+      tp.moves.push_back(move_to(MoveKind::kRapid, {to.x, to.y, 5}));
+    };
+    pass({4, 4}, {36, 4});  // the slot
+    pass({36, 6}, {4, 6});  // climb
+    if (third_pass_climbs)
+      pass({36, 8}, {4, 8});
+    else
+      pass({4, 8}, {36, 8});  // conventional
+    pass({36, 10}, {4, 10});  // climb
+    return tp;
+  };
+  const auto mixed = testing::sweep_check(box, 4.0, program(false), 30.0, 0.05, 0.0);
+  EXPECT_NEAR(mixed.climb_share, 2.0 / 3.0, 0.02);
+  const auto climb = testing::sweep_check(box, 4.0, program(true), 30.0, 0.05, 0.0);
+  EXPECT_GT(climb.climb_share, 0.99);
+}
+
+// Reversals: where the floor pass turns back by more than 135 degrees within a millimetre,
+// G0 moves along the floor (another generator's keep-tool-down links) included; a half
+// circle of radius 3 turns as far but over 9.4 mm, and is not one.
+TEST(SweepChecker, ReversalsAreTheMachineGoingBackNotAWideTurn) {
+  const PolygonSet box{{Ring{{0, 0}, {40, 0}, {40, 40}, {0, 40}}}};
+  auto floor = [](MoveKind kind, double x, double y) { return move_to(kind, {x, y, -1}); };
+  Toolpath zigzag;
+  zigzag.moves = {move_to(MoveKind::kRapid, {5, 5, 5}), move_to(MoveKind::kPlunge, {5, 5, -1}),
+                  floor(MoveKind::kFeed, 35, 5),        floor(MoveKind::kFeed, 35, 5.5),
+                  floor(MoveKind::kFeed, 5, 5.5),       floor(MoveKind::kFeed, 5, 6),
+                  floor(MoveKind::kFeed, 35, 6),        floor(MoveKind::kRapid, 5, 6.5),
+                  floor(MoveKind::kFeed, 35, 6.5)};
+  const auto z = testing::sweep_check(box, 4.0, zigzag, 30.0, 0.05, 0.0);
+  EXPECT_EQ(z.reversals, 4);  // at x = 35, 5, and both ends of the rapid
+  EXPECT_NEAR(z.floor_length_mm, 4 * 30.0 + 2 * 0.5 + std::hypot(30.0, 0.5), 0.05);
+  Toolpath loop;
+  loop.moves = {move_to(MoveKind::kRapid, {5, 5, 5}), move_to(MoveKind::kPlunge, {5, 5, -1}),
+                floor(MoveKind::kFeed, 35, 5), floor(MoveKind::kArc, 35, 11),
+                floor(MoveKind::kFeed, 5, 11)};
+  loop.moves[3].center = {35, 8, -1};  // counter-clockwise, round (35, 8)
+  const auto l = testing::sweep_check(box, 4.0, loop, 30.0, 0.05, 0.0);
+  EXPECT_EQ(l.reversals, 0);
+  EXPECT_NEAR(l.floor_length_mm, 60.0 + 3.0 * kPi, 0.05);
+}
+
 }  // namespace
 }  // namespace swarf
