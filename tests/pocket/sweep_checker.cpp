@@ -66,6 +66,15 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
   // axis counted as 0.8 mm of full slot).
   constexpr double kSamePointMm = 1e-3;
   Vec3 descent_from{}, helix_axis{};
+  // A straight move from a to b, sampled every `step` (its end included, its start not).
+  auto line = [&](Vec2 a, Vec2 b, bool entry, std::size_t mi, bool rapid) {
+    const double len = norm(b - a);
+    if (len < 1e-12) return;
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+    for (int k = 1; k <= n; ++k)
+      out.push_back(
+          {a + (b - a) * (static_cast<double>(k) / n), (b - a) / len, len / n, entry, mi, rapid});
+  };
   for (std::size_t mi = 0; mi < tp.moves.size(); ++mi) {
     const Move& m = tp.moves[mi];
     const Vec3 from = at;
@@ -74,14 +83,9 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
       closing = Closing::kNone;
       // A rapid along the floor (another generator's keep-tool-down link) is motion all
       // the same: sampled for the reversals only.
-      const double len = norm(m.end.xy() - from.xy());
       if (m.kind == MoveKind::kRapid && std::abs(m.end.z - zmin) <= 1e-6 &&
-          std::abs(from.z - zmin) <= 1e-6 && len > 1e-12) {
-        const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
-        for (int k = 1; k <= n; ++k)
-          out.push_back({from.xy() + (m.end.xy() - from.xy()) * (static_cast<double>(k) / n),
-                         (m.end.xy() - from.xy()) / len, len / n, false, mi, true});
-      }
+          std::abs(from.z - zmin) <= 1e-6)
+        line(from.xy(), m.end.xy(), false, mi, true);
       continue;
     }
     if (std::abs(from.z - zmin) > 1e-6) {
@@ -117,13 +121,7 @@ std::vector<Sample> floor_samples(const Toolpath& tp, double step) {
       }
       continue;
     }
-    const Vec2 a = from.xy(), b = m.end.xy();
-    const double len = norm(b - a);
-    if (len < 1e-12) continue;
-    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
-    for (int k = 1; k <= n; ++k)
-      out.push_back(
-          {a + (b - a) * (static_cast<double>(k) / n), (b - a) / len, len / n, entry, mi});
+    line(from.xy(), m.end.xy(), entry, mi, false);
   }
   return out;
 }
@@ -319,8 +317,10 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         }
       }
     }
-    // Reversals, over connected stretches of the floor pass (entries break them).
-    if (s.entry || norm(s.p - last) > 2.0 * s.ds + 1e-9) {
+    // Whether this sample goes on from the last one (not an entry, not after a gap).
+    const bool joined = !s.entry && norm(s.p - last) <= 2.0 * s.ds + 1e-9;
+    // Reversals, over connected stretches of the floor pass.
+    if (!joined) {
       window.clear();
     } else {
       rep.floor_length_mm += s.ds;
@@ -335,7 +335,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         window.clear();
       }
     }
-    if (s.entry || s.rapid || norm(s.p - last) > 2.0 * s.ds + 1e-9) flush();
+    if (!joined || s.rapid) flush();
     last = s.p;
     if (s.rapid) continue;
     const int removed = stamp(cut_stamper, s.p);
