@@ -63,6 +63,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.helix_radius_mm = num(p, "helix_radius");
   ap.plunge_candidates = p.at("plunge_candidates").get<int>();
   ap.straight_plunge = p.at("straight_plunge").get<bool>();
+  ap.one_way = p.at("one_way").get<bool>();
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
   ap.wall_scallop_mm = num(p, "wall_scallop");
@@ -164,6 +165,11 @@ const OperationRegistrar kRegistrar(Operation{
             number_param("max_pixels", 6e7,
                          "largest simulation image, pixels (the automatic resolution is "
                          "coarsened to fit)"),
+            Param{"one_way", ParamType::kBool, false,
+                  "every pass climb (conventional with --conventional): a pass that would "
+                  "come back the other way ends and the next starts over the cleared floor; "
+                  "slower to compute and to run",
+                  false},
             number_param("link_feed", 0.0,
                          "feed of keep-tool-down links over cleared floor, mm/min (0 = 5000, "
                          "the rapid rate of the time estimates)"),

@@ -33,6 +33,7 @@ struct Model {
   int theta_max_deg = 90;
   /// +1: material on the left (the paper's scan order); -1: mirrored, for climb milling.
   int sigma = -1;
+  bool one_way = false;            ///< AdaptiveParams::one_way
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
   double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
   bool straight_plunge = true;     ///< AdaptiveParams::straight_plunge

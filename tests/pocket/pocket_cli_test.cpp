@@ -77,6 +77,30 @@ TEST(PocketCli, StraightPlungeIsCountedAndCanBeTurnedOff) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("off.nc")));
 }
 
+// --one-way reaches the generator: the G-code read back and swept is climb throughout, where
+// both ways (the default) a few passes come back conventional.
+TEST(PocketCli, OneWayMakesEveryPassClimb) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const std::string common = "pocket " + in + " --tool flat:10 --stepover 2 --depth 3 -o ";
+  auto pocket = read_pocket(in);
+  ASSERT_TRUE(pocket.ok());
+  double climb[2] = {0.0, 0.0};
+  for (int one_way = 0; one_way < 2; ++one_way) {
+    const std::string out = dir.file(one_way ? "one.nc" : "both.nc");
+    const auto r = testing::run_swarf(common + out + (one_way ? " --one-way" : ""));
+    ASSERT_EQ(r.status, 0) << r.out;
+    auto tp = read_gcode(out);
+    ASSERT_TRUE(tp.ok()) << tp.status().to_string();
+    const auto s = testing::sweep_check(pocket->region, 5.0, *tp, 53.13, 0.1, 0.3);
+    EXPECT_LE(s.max_gouge_mm, 0.25);
+    EXPECT_EQ(s.slot_length_mm, 0.0);
+    climb[one_way] = s.climb_share;
+  }
+  EXPECT_LT(climb[0], 0.95);
+  EXPECT_GE(climb[1], 0.97);
+}
+
 // --link-feed sets the F word of the links over cleared floor (5000 by default), and a
 // negative one is a bad parameter that writes nothing.
 TEST(PocketCli, LinkFeedSetsTheFeedOfTheLinks) {

@@ -42,6 +42,12 @@ struct AdaptiveParams {
   double max_pixels = 6e7;
   /// Climb milling (material on the right of the feed direction, spindle M3).
   bool climb = true;
+  /// Every pass in the milling direction `climb` says (Fusion 360's "both ways" off): a pass
+  /// that would go on with the material on the other side ends, and the next starts where
+  /// the front beside the last pass begins, reached over the cleared floor. Off (seed 000):
+  /// the chooser takes the move nearest the target on either side, so passes that end
+  /// against a wall come back the other way. On costs path time and CPU (docs/pocket.md).
+  bool one_way = false;
 
   double depth_mm = 6.0;        ///< pocket depth below top_z_mm
   double stepdown_mm = 0.0;     ///< depth of cut per layer; 0 = the whole depth at once
