@@ -437,7 +437,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   std::size_t iterations = 0;  // bounds the loop even when shortcuts shorten the path
   // One way: the pass under way began at pass_start, with pass_start_px removed before it.
   // A pass resumed by the one-way rule that ends by it again having removed less than
-  // kShortPassSteps target steps gives up the material it was aimed at (one_way_px);
+  // kShortPassSteps target steps gives up the material it was aimed at (one_way_i, _j);
   // after kMostShortPasses of those in a row, or with no resume, the wrong-way move is
   // made, and the rule rests until one_way_rest_until.
   constexpr double kShortPassSteps = 3.0;
@@ -457,6 +457,22 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     bool shortcut_pending = false, cut_since_shortcut = false;
     int short_i = 0, short_j = 0;
     std::size_t reopened_tail = 0;  // the last cut whose front was reopened
+    // Goes on from `at` facing `d`, a resume the raw path jumps to (linked later), which
+    // starts a new pass there.
+    auto jump_to = [&](Vec2 at, Vec2 d) {
+      raw.eng.push_back(0);
+      raw.kind.push_back(StepKind::kLink);
+      raw.jump.push_back(true);
+      raw.entry.push_back(-1);
+      raw.pts.push_back(at);
+      pos = at;
+      dir = d;
+      idle_mm = 0.0;
+      next_shortcut_mm = shortcut_mm;
+      last_theta = 0;
+      pass_start = at;
+      pass_start_px = removed_px;
+    };
     while (raw.eng.size() < max_steps && ++iterations < max_steps) {
       if ((raw.eng.size() & 1023u) == 0 && ctx.cancelled())
         return Status(Error::kCancelled, "adaptive pocket cancelled");
@@ -526,19 +542,9 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
               (find_resume(m, stock, pass_start, at, d, si, sj, given_up, 2.0 * m.radius_mm) ||
                find_resume(m, stock, pass_start, at, d, si, sj, given_up));
           if (found) {
-            dir = Vec2{-d.y, d.x} * static_cast<double>(-m.sigma);  // along the front
-            trace_upstream(at, dir);
-            raw.eng.push_back(0);
-            raw.kind.push_back(StepKind::kLink);
-            raw.jump.push_back(true);
-            raw.entry.push_back(-1);
-            raw.pts.push_back(at);
-            pos = at;
-            idle_mm = 0.0;
-            next_shortcut_mm = shortcut_mm;
-            last_theta = 0;
-            pass_start = at;
-            pass_start_px = removed_px;
+            Vec2 along = Vec2{-d.y, d.x} * static_cast<double>(-m.sigma);  // along the front
+            trace_upstream(at, along);
+            jump_to(at, along);
             one_way_resumed = true;
             one_way_i = si;
             one_way_j = sj;
@@ -630,18 +636,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
           short_i = si;
           short_j = sj;
           drop_steps_from(tail);
-          raw.eng.push_back(0);
-          raw.kind.push_back(StepKind::kLink);
-          raw.jump.push_back(true);
-          raw.entry.push_back(-1);
-          raw.pts.push_back(at);
-          pos = at;
-          dir = d;
-          idle_mm = 0.0;
-          next_shortcut_mm = shortcut_mm;
-          last_theta = 0;
-          pass_start = at;
-          pass_start_px = removed_px;
+          jump_to(at, d);
           one_way_resumed = false;
         }
       }
