@@ -117,6 +117,16 @@ constexpr double kWallCrumbMm = 0.25;
 bool find_resume(const Model& model, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir,
                  int& pi, int& pj, BitImage& given_up, double window_mm = 0.0);
 
+/// One way (AdaptiveParams::one_way): from a free point `at` beside the material front,
+/// facing along it in the milling direction `dir`, backs up the front (against dir, hugging
+/// it at a standoff of about half a pixel, in steps of two delta_step) to where it begins: a
+/// wall or island in the way, or the front turning away. `at` and `dir` become that point and
+/// the direction along the front there, so the pass runs the front's whole length. Without
+/// it the resume point was the material nearest the last pass's start, often the far end
+/// of a front where it meets a wall: a pass of one step, then another resume (the L: 844
+/// resumes, 2.4 s, 81 % within +-20 %).
+void trace_front_upstream(const Model& model, const PixelStock& stock, Vec2& at, Vec2& dir);
+
 /// The linked path: points and per segment its kind; `jump[i]` marks a segment travelled
 /// by retracting, moving at the clearance plane and coming down again.
 struct LinkedPath {

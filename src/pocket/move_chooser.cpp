@@ -350,38 +350,6 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
         if (stock.material().get(i, j)) give_up(i, j);
     });
   };
-  // One way (AdaptiveParams::one_way): from a free point `c` beside the material front,
-  // facing along it in the milling direction `t`, back up the front (against t, hugging it
-  // at a standoff of about half a pixel, in steps of two delta_step) to where it begins: a
-  // wall or island in the way, or the front turning away. The pass then runs the front's
-  // whole length. Without it the resume point was the material nearest the last pass's
-  // start, often the far end of a front where it meets a wall: a pass of one step, then
-  // another resume (the L: 844 resumes, 2.4 s, 81 % within +-20 %).
-  auto trace_upstream = [&](Vec2& c, Vec2& t) {
-    const double st = 2.0 * m.step_mm;
-    // Turning by +a (in the paper's frame, sigma mirrors it) turns towards the material:
-    // for climb it lies on the right of t, so on the left of the way back.
-    const double side = -static_cast<double>(m.sigma);
-    Vec2 u = -t;
-    for (double gone = 0.0; gone < m.boundary_round_mm; gone += st) {
-      bool moved = false;
-      for (int a = 80; a >= -60 && !moved; a -= 10) {
-        const double r = deg_to_rad(a) * side;
-        const Vec2 v{u.x * std::cos(r) - u.y * std::sin(r), u.x * std::sin(r) + u.y * std::cos(r)};
-        const Vec2 q = c + v * st;
-        if (stock.gouges(q) || stock.material_in_disk(q, m.radius_mm + 0.5 * m.h, 0) > 0) continue;
-        if (a == 80) {  // free even turning hard towards it: the front begins here
-          t = -u;
-          return;
-        }
-        c = q;
-        u = v;
-        moved = true;
-      }
-      if (!moved) break;
-    }
-    t = -u;
-  };
   RawPath raw;
   // The pixels removed by the idle moves of the raw path (each with its step's index).
   // Only idle moves are ever dropped (drop_steps_from), and dropping them puts their pixels
@@ -523,7 +491,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       // side the material is on, so where a pass ends against a wall the next comes back as
       // a conventional pass, with a reversal between (the L: 68 % climb by the sweep). The
       // next pass starts instead where the material nearest the start of this one begins
-      // (trace_upstream), facing along the front; the jump there is linked over the cleared
+      // (trace_front_upstream), facing along the front; the jump there is linked over the cleared
       // floor or retracted by post-processing, as a resume is.
       if (m.one_way && c.eng > 0.5 * m.target_px && raw.eng.size() >= one_way_rest_until) {
         const Sides sd = material_sides(m, stock, pos, c.p);
@@ -543,7 +511,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
                find_resume(m, stock, pass_start, at, d, si, sj, given_up));
           if (found) {
             Vec2 along = Vec2{-d.y, d.x} * static_cast<double>(-m.sigma);  // along the front
-            trace_upstream(at, along);
+            trace_front_upstream(m, stock, at, along);
             jump_to(at, along);
             one_way_resumed = true;
             one_way_i = si;

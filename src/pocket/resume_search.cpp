@@ -1,5 +1,6 @@
 // The resume search of the adaptive pocket (our addition to seed 000): where the tool
-// goes on once a boundary round has ended with reachable material left.
+// goes on once a boundary round has ended with reachable material left, and where a one-way
+// pass starts along a front.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -165,6 +166,33 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       given_up.set(px[k].i, px[k].j, true);
   }
   return false;
+}
+
+void trace_front_upstream(const Model& m, const PixelStock& stock, Vec2& at, Vec2& dir) {
+  const double st = 2.0 * m.step_mm;
+  // Turning by +a (in the paper's frame, sigma mirrors it) turns towards the material: for
+  // climb it lies on the right of dir, so on the left of the way back.
+  const double side = -static_cast<double>(m.sigma);
+  Vec2 back = -dir;
+  for (double gone = 0.0; gone < m.boundary_round_mm; gone += st) {
+    int turn = 80;
+    for (; turn >= -60; turn -= 10) {
+      const double r = deg_to_rad(turn) * side;
+      const Vec2 v{back.x * std::cos(r) - back.y * std::sin(r),
+                   back.x * std::sin(r) + back.y * std::cos(r)};
+      const Vec2 q = at + v * st;
+      if (stock.gouges(q) || stock.material_in_disk(q, m.radius_mm + 0.5 * m.h, 0) > 0) continue;
+      if (turn < 80) {
+        at = q;
+        back = v;
+      }
+      break;
+    }
+    // Free even turning hard towards the material: the front begins here. Nowhere free: a
+    // wall or island in the way.
+    if (turn == 80 || turn < -60) break;
+  }
+  dir = -back;
 }
 
 }  // namespace swarf::pocket
