@@ -5,31 +5,19 @@
 #include <cstdio>
 
 #include "pocket/adaptive_test_util.h"
-#include "pocket/sweep_checker.h"
-#include "swarf/pocket/adaptive.h"
-#include "swarf/toolpath/metrics.h"
 
 namespace swarf {
 namespace {
 
-constexpr double kCheckerPixel = 0.08;
-constexpr double kWallTol = 0.25;
-
-struct Outcome {
-  ToolpathMetrics metrics;
-  testing::SweepReport sweep;
-};
-
-Outcome run(const Pocket& p, double tool_d, double stepover_mm, bool climb, bool one_way) {
+testing::SweptPath run(const Pocket& p, double tool_d, double stepover_mm, bool climb,
+                       bool one_way) {
   AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
   ap.climb = climb;
   ap.one_way = one_way;
   auto r = adaptive_pocket(p, testing::flat_mill(tool_d), ap);
   EXPECT_TRUE(r.ok()) << r.status().to_string();
   if (!r.ok()) return {};
-  Outcome out{compute_metrics(r->toolpath),
-              testing::sweep_check(p.region, 0.5 * tool_d, r->toolpath, r->target_engagement_deg,
-                                   kCheckerPixel, kWallTol)};
+  const testing::SweptPath out = testing::swept(p, tool_d, *r);
   const auto& s = out.sweep;
   std::printf(
       "  %s, %s, %s: climb %.1f %%, reversals %.1f per m, within20 %.1f %%, residual %.2f "
@@ -40,7 +28,7 @@ Outcome run(const Pocket& p, double tool_d, double stepover_mm, bool climb, bool
   return out;
 }
 
-void expect_clean(const Outcome& o) {
+void expect_clean(const testing::SweptPath& o) {
   EXPECT_LE(o.sweep.max_gouge_mm, 1e-6);
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
   EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
@@ -52,8 +40,8 @@ void expect_clean(const Outcome& o) {
 // 97.6 % climb, 63 reversals per metre against 83, within +-20 % 82.8 % against 86.0 %.
 TEST(AdaptiveOneWay, EveryPassClimbsAndTheCutStaysInTheBand) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const Outcome both = run(l, 8.0, 1.6, true, false);
-  const Outcome one = run(l, 8.0, 1.6, true, true);
+  const testing::SweptPath both = run(l, 8.0, 1.6, true, false);
+  const testing::SweptPath one = run(l, 8.0, 1.6, true, true);
   expect_clean(one);
   EXPECT_GE(one.sweep.climb_share, 0.95);
   EXPECT_GT(one.sweep.climb_share, both.sweep.climb_share + 0.1);
@@ -68,7 +56,7 @@ TEST(AdaptiveOneWay, EveryPassClimbsAndTheCutStaysInTheBand) {
 // The same rule with the mirrored frame: every pass conventional.
 TEST(AdaptiveOneWay, ConventionalOneWayKeepsTheMaterialOnTheLeft) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const Outcome one = run(l, 8.0, 1.6, false, true);
+  const testing::SweptPath one = run(l, 8.0, 1.6, false, true);
   expect_clean(one);
   EXPECT_LE(one.sweep.climb_share, 0.05);
 }

@@ -7,31 +7,18 @@
 #include <tuple>
 
 #include "pocket/adaptive_test_util.h"
-#include "pocket/sweep_checker.h"
-#include "swarf/pocket/adaptive.h"
-#include "swarf/toolpath/metrics.h"
 
 namespace swarf {
 namespace {
 
-constexpr double kCheckerPixel = 0.08;
-constexpr double kWallTol = 0.25;
-
-struct Outcome {
-  ToolpathMetrics metrics;
-  testing::SweepReport sweep;
-};
-
-Outcome run(const std::string& file, double tool_d, double stepover_mm) {
+testing::SweptPath run(const std::string& file, double tool_d, double stepover_mm) {
   const Pocket p = testing::load_test_pocket(file);
   AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
   ap.depth_mm = 6.0;
   auto r = adaptive_pocket(p, testing::flat_mill(tool_d), ap);
   EXPECT_TRUE(r.ok()) << r.status().to_string();
   if (!r.ok()) return {};
-  Outcome out{compute_metrics(r->toolpath),
-              testing::sweep_check(p.region, 0.5 * tool_d, r->toolpath, r->target_engagement_deg,
-                                   kCheckerPixel, kWallTol)};
+  const testing::SweptPath out = testing::swept(p, tool_d, *r);
   std::printf("  %s: lifts %zu, machining %.0f s, within20 %.1f %%, residual %.2f mm2\n",
               file.c_str(), out.metrics.lift_offs, out.metrics.machining_time_s,
               100 * out.sweep.within_20pct, out.sweep.residual_mm2);
@@ -55,7 +42,7 @@ TEST(AdaptiveResume, AChannelIsClearedFromOneFrontAtATimeNotInTurns) {
        {std::tuple{"random_seed2446.json", 12.0, 3.6, 2U, 130.0},
         {"random_seed1046.json", 20.0, 6.0, 7U, 165.0},
         {"random_seed2440.json", 20.0, 1.6, 5U, 180.0}}) {
-    const Outcome r = run(file, d, so);
+    const testing::SweptPath r = run(file, d, so);
     EXPECT_LE(r.metrics.lift_offs, most_lifts) << file;
     EXPECT_LE(r.metrics.machining_time_s, most_s) << file;
     EXPECT_LE(r.sweep.max_gouge_mm, 1e-6) << file;

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "pocket/sweep_checker.h"
 #include "swarf/pocket/adaptive.h"
+#include "swarf/toolpath/metrics.h"
 
 namespace swarf::testing {
 
@@ -64,6 +66,18 @@ inline AdaptiveParams params_3mm_deep(double stepover_mm) {
   ap.stepover_mm = stepover_mm;
   ap.depth_mm = 3.0;
   return ap;
+}
+
+// A generated path as the machine would run it (its metrics) and as the independent sweep
+// judges it, at 0.08 mm checker pixels with material within 0.25 mm of a wall taken for the
+// resolution scallop (the tolerances of adaptive_test.cpp).
+struct SweptPath {
+  ToolpathMetrics metrics;
+  SweepReport sweep;
+};
+inline SweptPath swept(const Pocket& p, double tool_d, const AdaptiveResult& r) {
+  return {compute_metrics(r.toolpath),
+          sweep_check(p.region, 0.5 * tool_d, r.toolpath, r.target_engagement_deg, 0.08, 0.25)};
 }
 
 }  // namespace swarf::testing
