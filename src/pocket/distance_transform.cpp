@@ -116,12 +116,10 @@ std::vector<float> squared_distance_transform(const BitImage& features, bool fea
   return f;
 }
 
-BitImage dilate_by_disk(const BitImage& img, double radius_px) {
-  const int w = img.width(), h = img.height();
-  BitImage out(w, h);
-  if (radius_px < 0.0) return out;
-  // Half widths of the disk's rows: the largest whole dx with dx^2 + dy^2 <= r^2, compared
-  // in the same double arithmetic as a threshold on the exact transform's squared values.
+std::vector<int> disk_half_widths(double radius_px) {
+  if (radius_px < 0.0) return {};
+  // Compared in the same double arithmetic as a threshold on the exact transform's squared
+  // values.
   const double r2 = radius_px * radius_px;
   const int reach = static_cast<int>(std::floor(radius_px)) + 1;
   std::vector<int> half(static_cast<std::size_t>(2 * reach + 1), -1);
@@ -135,6 +133,32 @@ BitImage dilate_by_disk(const BitImage& img, double radius_px) {
       --dx;
     half[static_cast<std::size_t>(dy + reach)] = dx;
   }
+  return half;
+}
+
+bool near_set_pixel(const BitImage& img, const std::vector<int>& half, int i, int j, int x0, int y0,
+                    int x1, int y1) {
+  const int reach = static_cast<int>(half.size() / 2);
+  x0 = std::max(x0, 0);
+  y0 = std::max(y0, 0);
+  x1 = std::min(x1, img.width() - 1);
+  y1 = std::min(y1, img.height() - 1);
+  for (int dy = -reach; dy <= reach; ++dy) {
+    const int dx = half[static_cast<std::size_t>(dy + reach)];
+    const int jj = j + dy;
+    if (dx < 0 || jj < y0 || jj > y1) continue;
+    const int lo = std::max(x0, i - dx), hi = std::min(x1, i + dx);
+    if (lo <= hi && img.first_set(jj, lo, hi) >= 0) return true;
+  }
+  return false;
+}
+
+BitImage dilate_by_disk(const BitImage& img, double radius_px) {
+  const int w = img.width(), h = img.height();
+  BitImage out(w, h);
+  if (radius_px < 0.0) return out;
+  const std::vector<int> half = disk_half_widths(radius_px);
+  const int reach = static_cast<int>(half.size() / 2);
   const int nw = img.words_per_row();
   auto word = [&](int j, int wd) {
     return j < 0 || j >= h || wd < 0 || wd >= nw ? std::uint64_t{0} : img.word(j, wd);

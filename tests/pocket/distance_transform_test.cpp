@@ -101,5 +101,30 @@ TEST(DistanceTransform, DiskDilationIsTheThresholdedTransform) {
   }
 }
 
+// The one-pixel question the link search asks instead of dilating its window: the same
+// answer as dilating the image cut down to the window, at every pixel in and round it.
+TEST(DistanceTransform, OnePixelNearTestAgreesWithTheDilatedWindow) {
+  const BitImage img = random_blobs(150, 60, 6u);
+  const int x0 = 20, y0 = 9, x1 = 131, y1 = 47;
+  BitImage window(img.width(), img.height());
+  for (int j = y0; j <= y1; ++j)
+    for (int i = x0; i <= x1; ++i)
+      window.set(i, j, img.get(i, j));
+  for (double r : {0.0, 1.5, 4.0, 7.3}) {
+    const BitImage dil = dilate_by_disk(window, r);
+    const std::vector<int> half = disk_half_widths(r);
+    int near = 0;
+    for (int j = 0; j < img.height(); ++j)
+      for (int i = 0; i < img.width(); ++i) {
+        ASSERT_EQ(near_set_pixel(img, half, i, j, x0, y0, x1, y1), dil.get(i, j))
+            << "r " << r << " at " << i << "," << j;
+        near += dil.get(i, j) ? 1 : 0;
+      }
+    EXPECT_GT(near, 0);
+    EXPECT_LT(near, img.width() * img.height());
+  }
+  EXPECT_TRUE(disk_half_widths(-1.0).empty());
+}
+
 }  // namespace
 }  // namespace swarf::pocket
