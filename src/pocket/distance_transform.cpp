@@ -131,7 +131,8 @@ std::vector<int> disk_half_widths(double radius_px) {
       ++dx;
     while (dx >= 0 && static_cast<double>(dx) * dx + static_cast<double>(dy) * dy > r2)
       --dx;
-    half[static_cast<std::size_t>(dy + reach)] = dx;
+    const int row = dy + reach;
+    half[static_cast<std::size_t>(row)] = dx;
   }
   return half;
 }
@@ -144,7 +145,8 @@ bool near_set_pixel(const BitImage& img, const std::vector<int>& half, int i, in
   x1 = std::min(x1, img.width() - 1);
   y1 = std::min(y1, img.height() - 1);
   for (int dy = -reach; dy <= reach; ++dy) {
-    const int dx = half[static_cast<std::size_t>(dy + reach)];
+    const int row = dy + reach;
+    const int dx = half[static_cast<std::size_t>(row)];
     const int jj = j + dy;
     if (dx < 0 || jj < y0 || jj > y1) continue;
     const int lo = std::max(x0, i - dx), hi = std::min(x1, i + dx);
@@ -175,7 +177,8 @@ BitImage dilate_by_disk(const BitImage& img, double radius_px) {
       for (; edge != 0; edge &= edge - 1) {
         const int i = wd * 64 + __builtin_ctzll(edge);
         for (int dy = -reach; dy <= reach; ++dy) {
-          const int dx = half[static_cast<std::size_t>(dy + reach)];
+          const int row = dy + reach;
+          const int dx = half[static_cast<std::size_t>(row)];
           const int jj = j + dy;
           if (dx < 0 || jj < 0 || jj >= h) continue;
           out.set_span(jj, std::max(0, i - dx), std::min(w - 1, i + dx));
