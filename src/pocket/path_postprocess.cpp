@@ -219,10 +219,10 @@ std::vector<Vec2> cleared_way(const Model& m, const PixelStock& stock, Vec2 a, V
       std::min(m.grid.height - 1, static_cast<int>(std::ceil(std::max(pa.y, pb.y) + reach_px)));
   // Centres within a tool radius less a pixel of material: the ends' own disks touch the
   // material front (a cut ends there, the next begins); the pulled moves' checks decide.
-  // Dilated over the window and a radius round it only (the whole stock's dilation at every
-  // search was 4 % of a ø6 pocket's time with 13 resumes).
-  // Asked node by node as the search reaches it (remembered per node): dilating the whole
-  // window was a fifth of the L's CPU with --one-way, whose links go back along each pass.
+  // Only the material in the window and a radius round it counts. Asked node by node as the
+  // search reaches it, and remembered per node: dilating the whole stock at every search was
+  // 4 % of a ø6 pocket's time with 13 resumes, and dilating the window a fifth of the L's
+  // CPU with --one-way, whose links go back along each pass.
   const BitImage& mat = stock.material();
   const int pad = static_cast<int>(std::ceil(r_px)) + 1;
   const int wi0 = std::max(0, i0 - pad), wj0 = std::max(0, j0 - pad);
