@@ -415,6 +415,19 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   bool one_way_resumed = false;
   Vec2 pass_start = pos;
   double removed_px = 0.0, pass_start_px = 0.0;
+  // A jump of the raw path (linked, retracted or entered later) to `at`, facing `d`: a new
+  // pass starts there. `entry_index`: the new entry made there, or -1 for a resume.
+  auto push_jump = [&](Vec2 at, Vec2 d, int entry_index) {
+    raw.eng.push_back(0);
+    raw.kind.push_back(StepKind::kLink);
+    raw.jump.push_back(true);
+    raw.entry.push_back(entry_index);
+    raw.pts.push_back(at);
+    pos = at;
+    dir = d;
+    pass_start = at;
+    pass_start_px = removed_px;
+  };
   for (int session = 0; session < 200; ++session) {
     const bool allow_slot = slot_run >= kCreepSessions;
     bool ended_by_slot = false;
@@ -425,21 +438,12 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
     bool shortcut_pending = false, cut_since_shortcut = false;
     int short_i = 0, short_j = 0;
     std::size_t reopened_tail = 0;  // the last cut whose front was reopened
-    // Goes on from `at` facing `d`, a resume the raw path jumps to (linked later), which
-    // starts a new pass there.
+    // A resume within the session: the jump, and the session's walk state starts afresh.
     auto jump_to = [&](Vec2 at, Vec2 d) {
-      raw.eng.push_back(0);
-      raw.kind.push_back(StepKind::kLink);
-      raw.jump.push_back(true);
-      raw.entry.push_back(-1);
-      raw.pts.push_back(at);
-      pos = at;
-      dir = d;
+      push_jump(at, d, -1);
       idle_mm = 0.0;
       next_shortcut_mm = shortcut_mm;
       last_theta = 0;
-      pass_start = at;
-      pass_start_px = removed_px;
     };
     while (raw.eng.size() < max_steps && ++iterations < max_steps) {
       if ((raw.eng.size() & 1023u) == 0 && ctx.cancelled())
@@ -666,15 +670,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
       resumed = true;
     }
     before_session = raw.eng.size();
-    raw.eng.push_back(0);
-    raw.kind.push_back(StepKind::kLink);
-    raw.jump.push_back(true);
-    raw.entry.push_back(new_entry);
-    raw.pts.push_back(at);
-    pos = at;
-    dir = d;
-    pass_start = at;
-    pass_start_px = removed_px;
+    push_jump(at, d, new_entry);
     one_way_resumed = false;
   }
   return raw;
