@@ -7,12 +7,13 @@
 // the suite short; these are the sizes bench/RESULTS-pocket.md reports. The L falls short
 // of the goal by a hair (94.99 %, 0.3 mm of its 5621 mm of cut: a third of its misses are
 // the crescents across the two channels 2 mm wider than the tool beside the square island,
-// most of the rest passes meeting a wall at an angle), so its floor is a tenth of a point
-// lower: a guard against losing more, not a claim that the goal is met there.
+// most of the rest passes meeting a wall at an angle), so it has a test of its own, a tenth
+// of a point lower: a guard against losing more, not a claim that the goal is met there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -30,7 +31,6 @@ struct BenchmarkPocket {
   const char* file;  // under tests/data/pocket; empty: the star, written by the test
   double diameter_mm;
   double stepover_mm;
-  double within_20pct_floor;  // the goal, 0.95, but for the L (see the top)
 };
 
 std::ostream& operator<<(std::ostream& os, const BenchmarkPocket& p) {
@@ -51,10 +51,9 @@ std::string star_json() {
   return os.str();
 }
 
-class BenchmarkPockets : public ::testing::TestWithParam<BenchmarkPocket> {};
-
-TEST_P(BenchmarkPockets, HoldTheBandOverNinetyFivePercentOfTheCut) {
-  const BenchmarkPocket& bp = GetParam();
+// Runs the CLI on the pocket, reads its G-code back and sweeps it; checks that it is clean
+// (no gouge past a checker pixel, no slot, under 0.5 mm^2 left). Empty when it could not run.
+std::optional<testing::SweepReport> swept_cli_program(const BenchmarkPocket& bp) {
   testing::TempDir dir;
   std::string in;
   if (*bp.file) {
@@ -67,29 +66,45 @@ TEST_P(BenchmarkPockets, HoldTheBandOverNinetyFivePercentOfTheCut) {
   flags << "pocket " << in << " --tool flat:" << bp.diameter_mm << " --stepover " << bp.stepover_mm
         << " --depth 6 -o " << dir.file("out.nc");
   const auto run = testing::run_swarf(flags.str());
-  ASSERT_EQ(run.status, 0) << run.out;
   auto pocket = read_pocket(in);
-  ASSERT_TRUE(pocket.ok()) << pocket.status().to_string();
   auto program = read_gcode(dir.file("out.nc"));
-  ASSERT_TRUE(program.ok()) << program.status().to_string();
+  if (run.status != 0 || !pocket.ok() || !program.ok()) {
+    ADD_FAILURE() << run.out << (pocket.ok() ? "" : pocket.status().to_string())
+                  << (program.ok() ? "" : program.status().to_string());
+    return std::nullopt;
+  }
   // swarf_pocket_sweep's rule: 0.05 mm pixels, or a twentieth of the stepover where finer.
   const double r = 0.5 * bp.diameter_mm;
   const double target_deg = rad_to_deg(std::acos(1.0 - bp.stepover_mm / r));
   const double pixel = std::min(0.05, bp.stepover_mm / 20.0);
   const auto s = testing::sweep_check(pocket->region, r, *program, target_deg, pixel, 0.2);
-  EXPECT_GE(s.within_20pct, bp.within_20pct_floor) << "cutting " << s.cutting_length_mm << " mm";
   EXPECT_LE(s.max_gouge_mm, pixel);
   EXPECT_EQ(s.slot_length_mm, 0.0);
   EXPECT_LT(s.residual_mm2, 0.5);
+  return s;
+}
+
+class BenchmarkPockets : public ::testing::TestWithParam<BenchmarkPocket> {};
+
+TEST_P(BenchmarkPockets, HoldTheBandOverNinetyFivePercentOfTheCut) {
+  const auto s = swept_cli_program(GetParam());
+  ASSERT_TRUE(s.has_value());
+  EXPECT_GE(s->within_20pct, 0.95) << "cutting " << s->cutting_length_mm << " mm";
 }
 
 INSTANTIATE_TEST_SUITE_P(
     AtFullSize, BenchmarkPockets,
-    ::testing::Values(BenchmarkPocket{"LWithIslands", "l_pocket_islands.json", 10.0, 1.0, 0.949},
-                      BenchmarkPocket{"KiriMoto", "kirimoto_pocket.json", 10.0, 1.0, 0.95},
-                      BenchmarkPocket{"Star", "", 10.0, 1.0, 0.95},
-                      BenchmarkPocket{"PcbViceBar", "pcbvicebar_slice.json", 6.0, 0.6, 0.95}),
+    ::testing::Values(BenchmarkPocket{"KiriMoto", "kirimoto_pocket.json", 10.0, 1.0},
+                      BenchmarkPocket{"Star", "", 10.0, 1.0},
+                      BenchmarkPocket{"PcbViceBar", "pcbvicebar_slice.json", 6.0, 0.6}),
     [](const ::testing::TestParamInfo<BenchmarkPocket>& p) { return std::string(p.param.name); });
+
+// The L reads 94.99 % (see the top): held to within a tenth of a point of the goal.
+TEST(BenchmarkPocketsAtFullSize, LWithIslandsHoldsTheBandWithinATenthOfAPointOfTheGoal) {
+  const auto s = swept_cli_program({"LWithIslands", "l_pocket_islands.json", 10.0, 1.0});
+  ASSERT_TRUE(s.has_value());
+  EXPECT_GE(s->within_20pct, 0.949) << "cutting " << s->cutting_length_mm << " mm";
+}
 
 }  // namespace
 }  // namespace swarf
