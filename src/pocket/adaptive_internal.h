@@ -3,6 +3,7 @@
 // (path_postprocess.cpp) and the driver (adaptive.cpp).
 #pragma once
 
+#include <algorithm>
 #include <functional>
 
 #include <vector>
@@ -17,6 +18,12 @@ namespace swarf::pocket {
 /// The feed of keep-tool-down links: AdaptiveParams::link_feed_mm_min, or the rapid rate.
 inline double link_feed_mm_min(const AdaptiveParams& p) {
   return p.link_feed_mm_min > 0.0 ? p.link_feed_mm_min : p.rapid_mm_min;
+}
+
+/// The least a step must remove to count as cutting (4 % of the target, at least 2 pixels):
+/// Model::cut_px, and the summary's split of cutting from air length.
+inline double cut_threshold_px(double target_px) {
+  return std::max(2.0, 0.04 * target_px);
 }
 
 /// Everything derived from pocket, tool and parameters before the first move.

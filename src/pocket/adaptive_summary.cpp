@@ -16,7 +16,7 @@ namespace swarf {
 AdaptiveSummary summarize(const AdaptiveResult& r, const AdaptiveParams& p) {
   AdaptiveSummary s;
   std::vector<std::pair<double, double>> eng;  // angle, length
-  const double cut_px = std::max(2.0, 0.04 * r.target_engagement_px);
+  const double cut_px = pocket::cut_threshold_px(r.target_engagement_px);
   for (const AdaptiveStep& st : r.steps) {
     if (st.plunged) {
       // Plunged through, then passed in the air: neither a cut nor a link of the path.

@@ -203,7 +203,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   }
   m.target_px = m.stepover_mm * m.step_mm / (m.h * m.h);
   m.tol_px = std::max(1.0, m.target_px * p.tolerance_pct / 100.0);
-  m.cut_px = std::max(2.0, 0.04 * m.target_px);
+  m.cut_px = cut_threshold_px(m.target_px);
   m.theta_max_deg = static_cast<int>(std::lround(p.max_deviation_deg));
   m.sigma = p.climb ? -1 : 1;
   m.one_way = p.one_way;
