@@ -121,8 +121,35 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
   // move to it runs at the cutting feed (random pocket 955, ø16 at 10 %: the last move of a
   // pass into the corner of an L's arm ran at the link feed on a read of nothing and took
   // 0.67 mm^2 in 0.36 mm by the sweep).
-  auto push_out = [&](Vec2& p) {
+  // A point the push leaves inside lies past the tip of the region of tool centres, where
+  // no place near it is clear of both walls: the chooser's pixels let the disk come within
+  // about a fifth of a pixel of each wall, which in a tip of a few degrees is tenths of a
+  // millimetre past its end (random pocket 5421, ø8 between a wall and a bar's corner
+  // 7.944 mm apart: a session ended 0.34 mm past the tip, and the push kept the place that
+  // gouged least, 0.042 mm into the wall by the sweep). It goes back along the path, towards
+  // a neighbour clear of the walls, to the last place that the move from there keeps clear
+  // (a bisection: once the move cuts in, every longer one does).
+  auto retreat = [&](std::size_t k) {
+    Vec2& p = lp.pts[k];
+    std::vector<std::size_t> neighbours;
+    if (k > 0) neighbours.push_back(k - 1);
+    if (k + 1 < n) neighbours.push_back(k + 1);
+    for (const std::size_t j : neighbours) {
+      const Vec2 a = lp.pts[j];
+      if (!m.walls.inside(a) || m.walls.distance(a) < reach - 1e-9) continue;
+      double lo = 0.0, hi = 1.0;
+      for (int it = 0; it < 40; ++it) {
+        const double t = 0.5 * (lo + hi);
+        (m.walls.segment_distance(a, a + (p - a) * t) >= reach - 1e-9 ? lo : hi) = t;
+      }
+      p = a + (p - a) * lo;
+      return;
+    }
+  };
+  auto push_out = [&](std::size_t k) {
+    Vec2& p = lp.pts[k];
     push_out_of_walls(m, p, on, reach);
+    if (m.walls.distance(p) < reach - 1e-9) retreat(k);
     lp.design_cut_ends.push_back(p);
   };
   for (std::size_t k = 0; k < n; ++k) {
@@ -144,11 +171,11 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
       const Vec2 mid = (foot[k] + m.walls.nearest(across)) * 0.5;
       if (m.walls.inside(mid) && m.walls.distance(mid) > d && distance(mid, p) < 2.0 * wide)
         p = mid;
-      if (m.walls.distance(p) < reach - 1e-9) push_out(p);
+      if (m.walls.distance(p) < reach - 1e-9) push_out(k);
     } else if (m.walls.distance(s) >= on - 1e-9 && m.walls.inside(s)) {
       p = s;
     } else if (d < reach - 1e-9) {
-      push_out(p);
+      push_out(k);
     }
   }
 }
