@@ -392,6 +392,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     paths[k] = pocket::postprocess(m, order, raw.value(), costs);
     snap_to_wall_offset(m, paths[k]);
     reach_into_tips(m, paths[k]);
+    drop_spurs(m, paths[k]);
     times[k] = path_time_s(paths[k], costs);
   });
   std::size_t best = 0;

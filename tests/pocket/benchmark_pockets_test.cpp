@@ -4,15 +4,16 @@
 // resolution, holds the engagement within +-20 % of the target over at least 95 % of the
 // cutting length, with no gouge, no full slot and under 0.5 mm^2 of reachable material
 // left. The adaptive_test.cpp pockets are scaled down (and cut at 20 % stepover) to keep
-// the suite short; these are the sizes bench/RESULTS-pocket.md reports. The L falls short
-// of the goal by a hair (94.99 %, 0.3 mm of its 5621 mm of cut: a third of its misses are
-// the crescents across the two channels 2 mm wider than the tool beside the square island,
-// most of the rest passes meeting a wall at an angle), so it has a test of its own, a tenth
-// of a point lower: a guard against losing more, not a claim that the goal is met there.
+// the suite short; these are the sizes bench/RESULTS-pocket.md reports. The L clears the
+// goal by the least (95.07 %, 3.8 mm of its 5616 mm of cut; 94.99 % before session 33 took
+// the spurs out of the channel crossings' ends, path_postprocess.cpp): a third of its misses
+// are the crescents across the two channels 2 mm wider than the tool beside the square
+// island, most of the rest passes meeting a wall at an angle.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -89,22 +90,18 @@ class BenchmarkPockets : public ::testing::TestWithParam<BenchmarkPocket> {};
 TEST_P(BenchmarkPockets, HoldTheBandOverNinetyFivePercentOfTheCut) {
   const auto s = swept_cli_program(GetParam());
   ASSERT_TRUE(s.has_value());
+  std::printf("  %s: within +-20 %% over %.3f %% of %.0f mm of cut\n", GetParam().name,
+              100.0 * s->within_20pct, s->cutting_length_mm);
   EXPECT_GE(s->within_20pct, 0.95) << "cutting " << s->cutting_length_mm << " mm";
 }
 
 INSTANTIATE_TEST_SUITE_P(
     AtFullSize, BenchmarkPockets,
-    ::testing::Values(BenchmarkPocket{"KiriMoto", "kirimoto_pocket.json", 10.0, 1.0},
+    ::testing::Values(BenchmarkPocket{"LWithIslands", "l_pocket_islands.json", 10.0, 1.0},
+                      BenchmarkPocket{"KiriMoto", "kirimoto_pocket.json", 10.0, 1.0},
                       BenchmarkPocket{"Star", "", 10.0, 1.0},
                       BenchmarkPocket{"PcbViceBar", "pcbvicebar_slice.json", 6.0, 0.6}),
     [](const ::testing::TestParamInfo<BenchmarkPocket>& p) { return std::string(p.param.name); });
-
-// The L reads 94.99 % (see the top): held to within a tenth of a point of the goal.
-TEST(BenchmarkPocketsAtFullSize, LWithIslandsHoldsTheBandWithinATenthOfAPointOfTheGoal) {
-  const auto s = swept_cli_program({"LWithIslands", "l_pocket_islands.json", 10.0, 1.0});
-  ASSERT_TRUE(s.has_value());
-  EXPECT_GE(s->within_20pct, 0.949) << "cutting " << s->cutting_length_mm << " mm";
-}
 
 }  // namespace
 }  // namespace swarf
