@@ -409,8 +409,8 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
 // or Algorithm 4's boundary move), and the next cut turns round and goes out past where
 // the pass ended. The L's channels beside the square island had one at each crossing's
 // end: 0.15 mm back and 0.22 mm forward along the wall, two reversals of the heading within
-// a few tenths of a millimetre, each a stop for the machine (the sweep counted 92 spurs on
-// the L, 39 on a 40 x 12 mm channel for a ø10). The step back is left out and the next cut
+// a few tenths of a millimetre, each a stop for the machine (92 such in the L's G-code, 39
+// in a 40 x 12 mm channel's for a ø10). The step back is left out and the next cut
 // starts where the pass ended: a move from there sweeps what the return sweeps beyond the
 // spur's root, so the same material, with one turn instead of two. Only a one-step link
 // between two cuts whose return turns by more than 150 degrees and passes its root, and
