@@ -45,7 +45,7 @@ TEST(AdaptiveSpurs, CrossingsOfAChannelTurnWithoutSteppingBack) {
   ASSERT_TRUE(r.ok()) << r.status().to_string();
   const int spurs = count_spurs(r->toolpath, params.top_z_mm - params.depth_mm);
   const auto s = testing::sweep_check(p.region, 5.0, r->toolpath, r->target_engagement_deg,
-                                      /*pixel_mm=*/0.05, /*wall_tol_mm=*/0.2);
+                                      /*pixel_mm=*/0.05, /*residual_tol_mm=*/0.2);
   std::printf("  spurs %d, gouge %.4f mm, residual %.2f mm2, within20 %.1f %%, slot %.1f mm\n",
               spurs, s.max_gouge_mm, s.residual_mm2, 100 * s.within_20pct, s.slot_length_mm);
   EXPECT_LE(spurs, 8);
