@@ -187,8 +187,8 @@ void snap_to_wall_offset(const Model& model, LinkedPath& lp);
 /// (wall_reach.cpp); their points go to lp.beyond_free.
 void reach_into_tips(const Model& model, LinkedPath& lp);
 /// Leaves out the steps back along a wall that the next cut turns round from and passes
-/// (wall_reach.cpp); returns how many.
-int drop_spurs(const Model& model, LinkedPath& lp);
+/// (wall_reach.cpp).
+void drop_spurs(const Model& model, LinkedPath& lp);
 
 /// What a kept output move removes in the re-simulation: pixels, path length, its angle
 /// (degrees), whether it is a link (removes at most cut_px a step) and whether it may go at

@@ -416,12 +416,11 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
 // between two cuts whose return turns by more than 150 degrees and passes its root, and
 // only where the straight move keeps off the walls by exact geometry (as the output's
 // chords are held).
-int drop_spurs(const Model& m, LinkedPath& lp) {
+void drop_spurs(const Model& m, LinkedPath& lp) {
   constexpr double kSpurCos = 0.866;  // cos 150 degrees
   const double reach = m.radius_mm + m.wall_stock_mm;
   LinkedPath out;
   out.pts.push_back(lp.pts.front());
-  int dropped = 0;
   const std::size_t n = lp.kind.size();  // segments
   for (std::size_t i = 0; i < n; ++i) {
     if (i + 1 < n && i > 0 && lp.kind[i] == StepKind::kLink && !lp.jump[i] &&
@@ -430,10 +429,8 @@ int drop_spurs(const Model& m, LinkedPath& lp) {
       const Vec2 a = out.pts.back(), b = lp.pts[i + 1], c = lp.pts[i + 2];
       const Vec2 ab = b - a, bc = c - b;
       if (dot(ab, bc) < -kSpurCos * norm(ab) * norm(bc) && dot(c - a, a - b) > 0.0 &&
-          m.walls.segment_distance(a, c) >= reach - 1e-7) {
-        ++dropped;
+          m.walls.segment_distance(a, c) >= reach - 1e-7)
         continue;
-      }
     }
     out.pts.push_back(lp.pts[i + 1]);
     out.kind.push_back(lp.kind[i]);
@@ -444,7 +441,6 @@ int drop_spurs(const Model& m, LinkedPath& lp) {
   lp.kind = std::move(out.kind);
   lp.jump = std::move(out.jump);
   lp.entry = std::move(out.entry);
-  return dropped;
 }
 
 }  // namespace swarf::pocket
