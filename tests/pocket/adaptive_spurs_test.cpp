@@ -1,4 +1,4 @@
-// Spurs (src/pocket/path_postprocess.cpp): a pass that ends against a wall, a step back
+// Spurs (drop_spurs, src/pocket/wall_reach.cpp): a pass that ends against a wall, a step back
 // along it that cuts nothing, and the next cut turning round past where the pass ended.
 #include <gtest/gtest.h>
 
