@@ -27,6 +27,12 @@ const std::array<Vec2, 24> kRingDirs = [] {
 // residual tolerance is 0.1 mm^2 per corner.
 constexpr double kCrumbsLeftMm2 = 0.25;
 
+// Whether the tool may stand at c over cleared floor: no gouge, and no material within half
+// a pixel beyond its disk (a resume point, and the front's standoff when a pass backs up it).
+bool clear_centre(const Model& m, const PixelStock& stock, Vec2 c) {
+  return !stock.gouges(c) && stock.material_in_disk(c, m.radius_mm + 0.5 * m.h, 0) == 0;
+}
+
 }  // namespace
 
 bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir, int& pi,
@@ -152,8 +158,7 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
             const Vec2 c1 = q + u * (m.radius_mm + 0.5 * m.step_mm);
             if (stock.gouges(c1) || !wall_crumbs_only(c1)) continue;
           }
-          if (stock.gouges(c) || stock.material_in_disk(c, m.radius_mm + 0.5 * m.h, 0) > 0)
-            continue;
+          if (!clear_centre(m, stock, c)) continue;
           at = c;
           dir = -u;
           pi = px[k].i;
@@ -181,7 +186,7 @@ void trace_front_upstream(const Model& m, const PixelStock& stock, Vec2& at, Vec
       const Vec2 v{back.x * std::cos(r) - back.y * std::sin(r),
                    back.x * std::sin(r) + back.y * std::cos(r)};
       const Vec2 q = at + v * st;
-      if (stock.gouges(q) || stock.material_in_disk(q, m.radius_mm + 0.5 * m.h, 0) > 0) continue;
+      if (!clear_centre(m, stock, q)) continue;
       if (turn < 80) {
         at = q;
         back = v;
