@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "pocket/adaptive_test_util.h"
-#include "pocket/sweep_checker.h"
 #include "swarf/pocket/adaptive.h"
 
 namespace swarf {
@@ -23,8 +22,7 @@ TEST(AdaptiveWallReach, APointPastTheTipOfTheCentresGoesBackWhereTheToolFits) {
   const Pocket p = testing::load_test_pocket("random_seed5421.json");
   auto r = adaptive_pocket(p, testing::flat_mill(8.0), testing::params_3mm_deep(2.4));
   ASSERT_TRUE(r.ok()) << r.status().to_string();
-  const auto s = testing::sweep_check(p.region, 4.0, r->toolpath, r->target_engagement_deg,
-                                      /*pixel_mm=*/0.08, /*residual_tol_mm=*/0.25);
+  const testing::SweepReport s = testing::swept(p, 8.0, *r).sweep;
   std::printf("  gouge %.4f mm, residual %.2f mm2, within20 %.1f %%\n", s.max_gouge_mm,
               s.residual_mm2, 100 * s.within_20pct);
   EXPECT_LE(s.max_gouge_mm, 1e-6);
