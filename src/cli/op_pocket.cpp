@@ -64,6 +64,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.plunge_candidates = p.at("plunge_candidates").get<int>();
   ap.straight_plunge = p.at("straight_plunge").get<bool>();
   ap.one_way = p.at("one_way").get<bool>();
+  ap.smooth_links = p.at("smooth_links").get<bool>();
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
   ap.wall_scallop_mm = num(p, "wall_scallop");
@@ -169,6 +170,10 @@ const OperationRegistrar kRegistrar(Operation{
                   "every pass climb (conventional with --conventional): a pass that would "
                   "come back the other way ends and the next starts over the cleared floor; "
                   "slower to compute and to run",
+                  false},
+            Param{"smooth_links", ParamType::kBool, false,
+                  "fly links that would turn back on a pass as loops over the cleared floor "
+                  "(fewer reversals, a little more path)",
                   false},
             number_param("link_feed", 0.0,
                          "feed of keep-tool-down links over cleared floor, mm/min (0 = 5000, "

@@ -41,6 +41,7 @@ struct Model {
   /// +1: material on the left (the paper's scan order); -1: mirrored, for climb milling.
   int sigma = -1;
   bool one_way = false;            ///< AdaptiveParams::one_way
+  bool smooth_links = false;       ///< AdaptiveParams::smooth_links
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
   double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
   bool straight_plunge = true;     ///< AdaptiveParams::straight_plunge
@@ -172,6 +173,16 @@ inline double retract_minutes(const LinkCosts& c, double across_mm) {
 }
 LinkedPath postprocess(const Model& model, const std::vector<Entry>& entries, const RawPath& raw,
                        const LinkCosts& costs);
+
+/// With AdaptiveParams::smooth_links: a link from a (reached from before_a) to b (left
+/// towards after_b) that does not turn back on either cut, where the straight line would
+/// by 120 degrees or more. The shortest Dubins path among a few turning radii and corners
+/// that keeps off the walls by exact geometry, cuts nothing of `stock` and turns by at most
+/// 120 degrees within any millimetre (smooth_link.cpp). Appends its points after a, b last,
+/// and returns true; false (nothing appended) where the straight line does not turn back,
+/// or no such path is found.
+bool smooth_link(const Model& model, const PixelStock& stock, Vec2 before_a, Vec2 a, Vec2 b,
+                 Vec2 after_b, std::vector<Vec2>& out);
 
 /// Takes off the scallops the path leaves on the walls (wall_rides.cpp): each group of
 /// material `after` (the re-simulated stock) holds against a wall higher than scallop_mm

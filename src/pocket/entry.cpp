@@ -207,6 +207,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.theta_max_deg = static_cast<int>(std::lround(p.max_deviation_deg));
   m.sigma = p.climb ? -1 : 1;
   m.one_way = p.one_way;
+  m.smooth_links = p.smooth_links;
   m.want_helix_mm = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
   m.straight_plunge = p.straight_plunge;
 

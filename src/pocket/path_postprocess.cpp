@@ -141,6 +141,13 @@ bool grazes(const Model& m, const PixelStock& stock, Vec2 a, Vec2 b) {
   return !for_substeps(m, a, b, [&](Vec2 from, Vec2 to) { return stock.probe(from, to, 0) <= 0; });
 }
 
+// Whether the raw moves first..last removed no pixel at all.
+bool region_removes_nothing(const RawPath& raw, std::size_t first, std::size_t last) {
+  for (std::size_t q = first; q < last; ++q)
+    if (raw.eng[q] > 0) return false;
+  return true;
+}
+
 // Appends the sub-steps of a straight move and cuts them.
 void apply_straight(const Model& m, PixelStock& stock, Vec2 a, Vec2 b, std::vector<Vec2>& out) {
   for_substeps(m, a, b, [&](Vec2 from, Vec2 to) {
@@ -450,6 +457,22 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
       continue;
     }
     std::vector<Vec2> link;
+    // With smooth_links, a straight link that would turn back on either cut is flown as a
+    // loop over the cleared floor where one fits (smooth_link.cpp); the steps either side
+    // give the cuts' headings. Only where the raw moves between cut nothing at all: what
+    // they cut, the loop (which cuts nothing) would leave. The loop is already smooth, so
+    // its joins are not Chaikin-cut (that would pull them towards the walls).
+    if (m.smooth_links && r.first > 0 && r.last + 1 < raw.pts.size() && !raw.jump[r.first - 1] &&
+        !raw.jump[r.last] && region_removes_nothing(raw, r.first, r.last) &&
+        smooth_link(m, stock, raw.pts[r.first - 1], a, b, raw.pts[r.last + 1], link)) {
+      for (Vec2 p : link) {
+        out.pts.push_back(p);
+        out.kind.push_back(StepKind::kLink);
+        out.jump.push_back(false);
+        out.entry.push_back(-1);
+      }
+      continue;
+    }
     if (try_straight(m, stock, a, b, link)) {
       append_link(link, before);
       continue;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -99,6 +100,31 @@ TEST(PocketCli, OneWayMakesEveryPassClimb) {
   }
   EXPECT_LT(climb[0], 0.95);
   EXPECT_GE(climb[1], 0.97);
+}
+
+// --smooth-links reaches the generator: the G-code read back and swept turns back fewer
+// times per metre of floor pass, with no gouge.
+TEST(PocketCli, SmoothLinksTurnBackLess) {
+  testing::TempDir dir;
+  const std::string in = std::string(SWARF_TEST_DATA_DIR) + "/pocket/kirimoto_pocket.json";
+  const std::string common = "pocket " + in + " --tool flat:10 --stepover 2 --depth 3 -o ";
+  auto pocket = read_pocket(in);
+  ASSERT_TRUE(pocket.ok());
+  double per_mm[2] = {0.0, 0.0};
+  for (int smooth = 0; smooth < 2; ++smooth) {
+    const std::string out = dir.file(smooth ? "smooth.nc" : "straight.nc");
+    const auto r = testing::run_swarf(common + out + (smooth ? " --smooth-links" : ""));
+    ASSERT_EQ(r.status, 0) << r.out;
+    auto tp = read_gcode(out);
+    ASSERT_TRUE(tp.ok()) << tp.status().to_string();
+    const auto s = testing::sweep_check(pocket->region, 5.0, *tp, 53.13, 0.1, 0.3);
+    EXPECT_LE(s.max_gouge_mm, 0.25);
+    EXPECT_EQ(s.slot_length_mm, 0.0);
+    per_mm[smooth] = s.reversals / s.floor_length_mm;
+    std::printf("  %s: %.1f reversals per m\n", smooth ? "smooth" : "straight",
+                1000 * per_mm[smooth]);
+  }
+  EXPECT_LT(per_mm[1], 0.8 * per_mm[0]);
 }
 
 // --link-feed sets the F word of the links over cleared floor (5000 by default), and a

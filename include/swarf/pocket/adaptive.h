@@ -48,6 +48,11 @@ struct AdaptiveParams {
   /// the chooser takes the move nearest the target on either side, so passes that end
   /// against a wall come back the other way. On costs path time and CPU (docs/pocket.md).
   bool one_way = false;
+  /// Links that would turn back on a pass (the straight line from a pass's end reversing its
+  /// heading, or the next pass's) are flown as loops over the cleared floor instead: a
+  /// Dubins path of arcs and straights that keeps off the walls and cuts nothing. Fewer
+  /// reversals (the machine stops less), at some path length (docs/pocket.md).
+  bool smooth_links = false;
 
   double depth_mm = 6.0;        ///< pocket depth below top_z_mm
   double stepdown_mm = 0.0;     ///< depth of cut per layer; 0 = the whole depth at once
