@@ -2,7 +2,7 @@
 // judged by the independent sweep's reading of which side of the motion the material is on.
 #include <gtest/gtest.h>
 
-#include <cstdio>
+#include <string>
 
 #include "pocket/adaptive_test_util.h"
 
@@ -14,18 +14,9 @@ testing::SweptPath run(const Pocket& p, double tool_d, double stepover_mm, bool 
   AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
   ap.climb = climb;
   ap.one_way = one_way;
-  auto r = adaptive_pocket(p, testing::flat_mill(tool_d), ap);
-  EXPECT_TRUE(r.ok()) << r.status().to_string();
-  if (!r.ok()) return {};
-  const testing::SweptPath out = testing::swept(p, tool_d, *r);
-  const auto& s = out.sweep;
-  std::printf(
-      "  %s, %s, %s: climb %.1f %%, reversals %.1f per m, within20 %.1f %%, residual %.2f "
-      "mm2, slot %.1f mm, machining %.0f s\n",
-      p.source.c_str(), climb ? "climb" : "conventional", one_way ? "one way" : "both ways",
-      100 * s.climb_share, 1000.0 * s.reversals / s.floor_length_mm, 100 * s.within_20pct,
-      s.residual_mm2, s.slot_length_mm, out.metrics.machining_time_s);
-  return out;
+  return testing::generate_swept(
+      p, tool_d, ap,
+      std::string(climb ? "climb" : "conventional") + (one_way ? ", one way" : ", both ways"));
 }
 
 void expect_clean(const testing::SweptPath& o) {

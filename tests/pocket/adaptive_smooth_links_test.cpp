@@ -3,7 +3,7 @@
 // floor pass turning by more than 135 degrees within 1 mm), gouge, residual and band.
 #include <gtest/gtest.h>
 
-#include <cstdio>
+#include <string>
 
 #include "pocket/adaptive_test_util.h"
 
@@ -15,18 +15,16 @@ testing::SweptPath run(const Pocket& p, double tool_d, double stepover_mm, bool 
   AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
   ap.one_way = one_way;
   ap.smooth_links = smooth_links;
-  auto r = adaptive_pocket(p, testing::flat_mill(tool_d), ap);
-  EXPECT_TRUE(r.ok()) << r.status().to_string();
-  if (!r.ok()) return {};
-  const testing::SweptPath out = testing::swept(p, tool_d, *r);
-  const auto& s = out.sweep;
-  std::printf(
-      "  %s, %s, %s: reversals %.1f per m, within20 %.2f %%, residual %.2f mm2, slot %.1f "
-      "mm, machining %.0f s\n",
-      p.source.c_str(), one_way ? "one way" : "both ways",
-      smooth_links ? "smooth links" : "straight links", 1000.0 * s.reversals / s.floor_length_mm,
-      100 * s.within_20pct, s.residual_mm2, s.slot_length_mm, out.metrics.machining_time_s);
-  return out;
+  return testing::generate_swept(p, tool_d, ap,
+                                 std::string(one_way ? "one way" : "both ways") +
+                                     (smooth_links ? ", smooth links" : ", straight links"));
+}
+
+// Safe as the straight links are: no gouge, no more material left, no slot.
+void expect_as_clean(const testing::SweptPath& smooth, const testing::SweptPath& straight) {
+  EXPECT_LE(smooth.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(smooth.sweep.residual_mm2, straight.sweep.residual_mm2 + 0.05);
+  EXPECT_EQ(smooth.sweep.slot_length_mm, 0.0);
 }
 
 double reversals_per_mm(const testing::SweptPath& o) {
@@ -40,9 +38,7 @@ TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
   const testing::SweptPath straight = run(l, 8.0, 1.6, false, false);
   const testing::SweptPath smooth = run(l, 8.0, 1.6, false, true);
-  EXPECT_LE(smooth.sweep.max_gouge_mm, 1e-6);
-  EXPECT_LE(smooth.sweep.residual_mm2, straight.sweep.residual_mm2 + 0.05);
-  EXPECT_EQ(smooth.sweep.slot_length_mm, 0.0);
+  expect_as_clean(smooth, straight);
   EXPECT_LT(reversals_per_mm(smooth), 0.7 * reversals_per_mm(straight));
   // The loops cut nothing: the cut and its engagement stay what they were.
   EXPECT_GE(smooth.sweep.within_20pct, straight.sweep.within_20pct - 0.01);
@@ -58,9 +54,7 @@ TEST(AdaptiveSmoothLinks, OneWayLinksLoopInsteadOfTurningBack) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
   const testing::SweptPath straight = run(l, 8.0, 1.6, true, false);
   const testing::SweptPath smooth = run(l, 8.0, 1.6, true, true);
-  EXPECT_LE(smooth.sweep.max_gouge_mm, 1e-6);
-  EXPECT_LE(smooth.sweep.residual_mm2, straight.sweep.residual_mm2 + 0.05);
-  EXPECT_EQ(smooth.sweep.slot_length_mm, 0.0);
+  expect_as_clean(smooth, straight);
   EXPECT_GE(smooth.sweep.climb_share, 0.95);
   EXPECT_LT(reversals_per_mm(smooth), 0.95 * reversals_per_mm(straight));
 }

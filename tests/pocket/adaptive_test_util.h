@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,24 @@ struct SweptPath {
 inline SweptPath swept(const Pocket& p, double tool_d, const AdaptiveResult& r) {
   return {compute_metrics(r.toolpath),
           sweep_check(p.region, 0.5 * tool_d, r.toolpath, r.target_engagement_deg, 0.08, 0.25)};
+}
+
+// The pocket generated with `ap` for a ø tool_d flat end mill, and swept; prints the sweep's
+// milling side, smoothness and band figures under `label`.
+inline SweptPath generate_swept(const Pocket& p, double tool_d, const AdaptiveParams& ap,
+                                const std::string& label) {
+  auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
+  EXPECT_TRUE(r.ok()) << r.status().to_string();
+  if (!r.ok()) return {};
+  const SweptPath out = swept(p, tool_d, *r);
+  const auto& s = out.sweep;
+  std::printf(
+      "  %s, %s: climb %.1f %%, reversals %.1f per m, within20 %.2f %%, residual %.2f mm2, "
+      "slot %.1f mm, machining %.0f s\n",
+      p.source.c_str(), label.c_str(), 100 * s.climb_share,
+      1000.0 * s.reversals / s.floor_length_mm, 100 * s.within_20pct, s.residual_mm2,
+      s.slot_length_mm, out.metrics.machining_time_s);
+  return out;
 }
 
 }  // namespace swarf::testing
