@@ -413,15 +413,16 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     }
   };
   std::vector<std::pair<std::size_t, std::size_t>> joins;  // out point index ranges to smooth
-  // Link points at depth after out point `before`, a join to smooth.
-  auto append_link = [&](const std::vector<Vec2>& pts, std::size_t before) {
+  // Link points at depth after out point `before`; a join to smooth unless `smooth_join` is
+  // false.
+  auto append_link = [&](const std::vector<Vec2>& pts, std::size_t before, bool smooth_join) {
     for (Vec2 p : pts) {
       out.pts.push_back(p);
       out.kind.push_back(StepKind::kLink);
       out.jump.push_back(false);
       out.entry.push_back(-1);
     }
-    joins.push_back({before, out.pts.size() - 1});
+    if (smooth_join) joins.push_back({before, out.pts.size() - 1});
   };
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const Region& r = regions[k];
@@ -465,16 +466,11 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
     if (m.smooth_links && r.first > 0 && r.last + 1 < raw.pts.size() && !raw.jump[r.first - 1] &&
         !raw.jump[r.last] && region_removes_nothing(raw, r.first, r.last) &&
         smooth_link(m, stock, raw.pts[r.first - 1], a, b, raw.pts[r.last + 1], link)) {
-      for (Vec2 p : link) {
-        out.pts.push_back(p);
-        out.kind.push_back(StepKind::kLink);
-        out.jump.push_back(false);
-        out.entry.push_back(-1);
-      }
+      append_link(link, before, false);
       continue;
     }
     if (try_straight(m, stock, a, b, link)) {
-      append_link(link, before);
+      append_link(link, before, true);
       continue;
     }
     // Fallback: the raw boundary-following path, pulled taut, unless a retract is faster.
@@ -503,7 +499,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
           apply_straight(m, stock, from, v, pts);
           from = v;
         }
-        append_link(pts, before);
+        append_link(pts, before, true);
         continue;
       }
     }
@@ -530,7 +526,7 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
         apply_straight(m, stock, q0, raw.pts[q], pts);
         q0 = raw.pts[q];
       }
-      append_link(pts, before);
+      append_link(pts, before, true);
     }
   }
   // Chaikin smoothing of each straight link with a few points of the cuts on either side
