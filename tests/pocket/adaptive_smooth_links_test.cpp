@@ -47,10 +47,11 @@ TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
 }
 
 // One way, every pass ends against a wall and the next starts back along the front. The
-// loops take out fewer of the turns there (60.6 -> 51.8 per metre): a pass that ran into a
-// wall leaves it with a corner, and a loop after a corner needs room the floor near the
-// wall rarely has. The loops stay safe and the passes climb.
-TEST(AdaptiveSmoothLinks, OneWayLinksLoopInsteadOfTurningBack) {
+// loops take out fewer of the turns there (60.6 -> 51.8 per metre; most likely because a
+// pass that ran into a wall must leave it with a corner, and a loop after a corner needs
+// more room than the floor near the wall has; not proven). The loops stay safe and the
+// passes climb.
+TEST(AdaptiveSmoothLinks, OneWayTurnsBackLessAndStaysClimbAndClean) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
   const testing::SweptPath straight = run(l, 8.0, 1.6, true, false);
   const testing::SweptPath smooth = run(l, 8.0, 1.6, true, true);
