@@ -393,6 +393,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     snap_to_wall_offset(m, paths[k]);
     reach_into_tips(m, paths[k]);
     drop_spurs(m, paths[k]);
+    keep_chords_off_walls(m, paths[k]);
     times[k] = path_time_s(paths[k], costs);
   });
   std::size_t best = 0;

@@ -200,6 +200,9 @@ void reach_into_tips(const Model& model, LinkedPath& lp);
 /// Leaves out the steps back along a wall that the next cut turns round from and passes
 /// (wall_reach.cpp).
 void drop_spurs(const Model& model, LinkedPath& lp);
+/// Splits moves between points on a wall's offset that sag into the wall where the offset
+/// is an arc, with midpoints on it (wall_reach.cpp).
+void keep_chords_off_walls(const Model& model, LinkedPath& lp);
 
 /// What a kept output move removes in the re-simulation: pixels, path length, its angle
 /// (degrees), whether it is a link (removes at most cut_px a step) and whether it may go at

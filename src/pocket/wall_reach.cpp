@@ -443,4 +443,68 @@ void drop_spurs(const Model& m, LinkedPath& lp) {
   lp.entry = std::move(out.entry);
 }
 
+// Chords round a wall's offset (our addition). Points on a wall's exact offset keep
+// kWallClearanceMm off it, but where the offset is an arc (round a convex corner of an
+// island or of the outline) the straight move between two of them sags towards the wall
+// by chord^2 / (8 x radius): 2.8 um for a 0.3 mm chord round a ø8's corner, 0.8 um into
+// the island (the rectangle-with-an-island test pocket, with smooth links: the
+// re-simulation counted two gouging steps; the output, as swept, was clear). Such a move
+// gets midpoints put onto the offset, halving it until it keeps clear. On 29 pockets at
+// 10 and 30 % (default flags) it changed 6 programs, none's band by more than 0.1 point.
+void keep_chords_off_walls(const Model& m, LinkedPath& lp) {
+  const double on = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
+  const double reach = m.radius_mm + m.wall_stock_mm;
+  auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-9; };
+  // The offset point nearest the middle of a and b, if it keeps clear of every wall.
+  auto onto_offset = [&](Vec2 a, Vec2 b, Vec2& s) {
+    const Vec2 mid = (a + b) * 0.5, foot = m.walls.nearest(mid);
+    const double d = distance(mid, foot);
+    if (d < 1e-9 || !m.walls.inside(mid)) return false;
+    s = foot + (mid - foot) * (on / d);
+    return m.walls.inside(s) && m.walls.distance(s) >= on - 1e-9;
+  };
+  LinkedPath out;
+  out.pts.push_back(lp.pts.front());
+  const std::size_t n = lp.kind.size();
+  std::vector<Vec2> stack, between;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = lp.pts[i], b = lp.pts[i + 1];
+    between.clear();
+    if (!lp.jump[i] && m.walls.distance(a) >= reach - 1e-9 && m.walls.distance(b) >= reach - 1e-9 &&
+        !clear(a, b)) {
+      // Depth-first halving, left half first, so `between` comes out in path order.
+      struct Piece {
+        Vec2 a, b;
+        int depth;
+      };
+      std::vector<Piece> todo{{a, b, 0}};
+      while (!todo.empty()) {
+        const Piece p = todo.back();
+        todo.pop_back();
+        Vec2 s;
+        if (p.depth < 8 && !clear(p.a, p.b) && onto_offset(p.a, p.b, s)) {
+          todo.push_back({s, p.b, p.depth + 1});
+          todo.push_back({p.a, s, p.depth + 1});
+        } else if (p.b != b) {
+          between.push_back(p.b);
+        }
+      }
+    }
+    for (const Vec2& v : between) {
+      out.pts.push_back(v);
+      out.kind.push_back(lp.kind[i]);
+      out.jump.push_back(false);
+      out.entry.push_back(-1);
+    }
+    out.pts.push_back(b);
+    out.kind.push_back(lp.kind[i]);
+    out.jump.push_back(lp.jump[i]);
+    out.entry.push_back(lp.entry[i]);
+  }
+  lp.pts = std::move(out.pts);
+  lp.kind = std::move(out.kind);
+  lp.jump = std::move(out.jump);
+  lp.entry = std::move(out.entry);
+}
+
 }  // namespace swarf::pocket

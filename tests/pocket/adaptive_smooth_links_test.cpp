@@ -60,5 +60,24 @@ TEST(AdaptiveSmoothLinks, OneWayTurnsBackLessAndStaysClimbAndClean) {
   EXPECT_LT(reversals_per_mm(smooth), 0.95 * reversals_per_mm(straight));
 }
 
+// A rectangle with a rectangular island, ø8 at 15 %, with smooth links: two moves round
+// the island's corner ran between points on the tool's exact offset 0.3 mm apart, and the
+// chord sagged 2.8 um towards the corner, 0.8 um into the island past the 2 um the passes
+// keep off it: the re-simulation counted two gouging steps (the output, as swept, was
+// clear). keep_chords_off_walls (wall_reach.cpp) now splits such moves on the path itself.
+TEST(AdaptiveSmoothLinks, NoMoveRoundAnIslandsCornerCutsIntoIt) {
+  const Pocket p =
+      make_pocket({{0, 0}, {40, 0}, {40, 30}, {0, 30}}, {{{14, 10}, {22, 10}, {22, 16}, {14, 16}}},
+                  "rectangle with an island")
+          .value();
+  AdaptiveParams ap = testing::params_3mm_deep(1.2);
+  ap.smooth_links = true;
+  auto r = adaptive_pocket(p, testing::flat_mill(8.0), ap);
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  EXPECT_EQ(r->gouge_steps, 0);
+  const testing::SweptPath s = testing::swept(p, 8.0, *r);
+  EXPECT_LE(s.sweep.max_gouge_mm, 1e-6);
+}
+
 }  // namespace
 }  // namespace swarf
