@@ -63,13 +63,17 @@ int main(int argc, char** argv) {
     return f;
   };
   if (argc >= 6) {
-    // x, y, path length, arc engagement (deg, -1 in the entry), distance to the walls.
+    // x, y, path length, arc engagement (deg, -1 in the entry), distance to the walls, the
+    // index of the sample's move in the program and that move's feed (mm/min).
     std::FILE* f = open_csv(argv[5]);
     if (f == nullptr) return 2;
-    std::fprintf(f, "x,y,ds,eng,wall\n");
-    for (const auto& q : samples)
-      std::fprintf(f, "%.3f,%.3f,%.4f,%.1f,%.3f\n", q.position.x, q.position.y, q.length_mm,
-                   q.engagement_deg, q.wall_distance_mm);
+    std::fprintf(f, "x,y,ds,eng,wall,move,feed\n");
+    for (const auto& q : samples) {
+      const auto& mv = program->moves;
+      const double feed = q.move < mv.size() ? mv[q.move].feed_mm_min : 0.0;
+      std::fprintf(f, "%.3f,%.3f,%.4f,%.1f,%.3f,%zu,%.0f\n", q.position.x, q.position.y,
+                   q.length_mm, q.engagement_deg, q.wall_distance_mm, q.move, feed);
+    }
     std::fclose(f);
   }
   if (argc == 7) {
