@@ -404,6 +404,25 @@ void reach_into_tips(const Model& m, LinkedPath& lp) {
   lp = std::move(out);
 }
 
+namespace {
+
+// A step to `to` of the same kind, jump and entry as step i of lp, appended to out; and
+// out's steps put in place of lp's (the points, kinds, jumps and entries, not the rest).
+void append_step(LinkedPath& out, const LinkedPath& lp, std::size_t i, Vec2 to) {
+  out.pts.push_back(to);
+  out.kind.push_back(lp.kind[i]);
+  out.jump.push_back(lp.jump[i]);
+  out.entry.push_back(lp.entry[i]);
+}
+void take_steps(LinkedPath& lp, LinkedPath& out) {
+  lp.pts = std::move(out.pts);
+  lp.kind = std::move(out.kind);
+  lp.jump = std::move(out.jump);
+  lp.entry = std::move(out.entry);
+}
+
+}  // namespace
+
 // Spurs (our addition). A pass ends against a wall; the way on steps back along it
 // cutting nothing (a resume point, which sits half a step back from the material it faces,
 // or Algorithm 4's boundary move), and the next cut turns round and goes out past where
@@ -432,15 +451,9 @@ void drop_spurs(const Model& m, LinkedPath& lp) {
           m.walls.segment_distance(a, c) >= reach - 1e-7)
         continue;
     }
-    out.pts.push_back(lp.pts[i + 1]);
-    out.kind.push_back(lp.kind[i]);
-    out.jump.push_back(lp.jump[i]);
-    out.entry.push_back(lp.entry[i]);
+    append_step(out, lp, i, lp.pts[i + 1]);
   }
-  lp.pts = std::move(out.pts);
-  lp.kind = std::move(out.kind);
-  lp.jump = std::move(out.jump);
-  lp.entry = std::move(out.entry);
+  take_steps(lp, out);
 }
 
 // Chords round a wall's offset (our addition). Points on a wall's exact offset keep
@@ -500,21 +513,12 @@ void keep_chords_off_walls(const Model& m, LinkedPath& lp) {
         }
       }
     }
-    for (const Vec2& v : between) {
-      out.pts.push_back(v);
-      out.kind.push_back(lp.kind[i]);
-      out.jump.push_back(false);
-      out.entry.push_back(-1);
-    }
-    out.pts.push_back(b);
-    out.kind.push_back(lp.kind[i]);
-    out.jump.push_back(lp.jump[i]);
-    out.entry.push_back(lp.entry[i]);
+    // Only moves that are no jump are split, so the pieces take step i's kind and entry (-1).
+    for (const Vec2& v : between)
+      append_step(out, lp, i, v);
+    append_step(out, lp, i, b);
   }
-  lp.pts = std::move(out.pts);
-  lp.kind = std::move(out.kind);
-  lp.jump = std::move(out.jump);
-  lp.entry = std::move(out.entry);
+  take_steps(lp, out);
 }
 
 }  // namespace swarf::pocket
