@@ -60,6 +60,10 @@ struct Model {
 };
 
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& params);
+/// The pixels' clearance at a point, mm: its nearest pixel centre's distance to the nearest
+/// forbidden pixel, less half a pixel's diagonal, so that a point judged free really is (the
+/// disk test of the stock is the final word); 0 outside the image (entry.cpp).
+double clearance_at(const Model& model, Vec2 p);
 
 struct Entry {
   Vec2 centre;                   ///< plunge point

@@ -22,15 +22,6 @@ double clearance_mm(const Model& m, int i, int j) {
   return std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) * m.h;
 }
 
-// Clearance at an arbitrary point: nearest pixel's value minus half a pixel diagonal, so
-// that a point judged free really is (the disk test of the stock is the final word).
-double clearance_at(const Model& m, Vec2 p) {
-  const Vec2 q = m.grid.to_px(p);
-  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
-  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return 0.0;
-  return clearance_mm(m, i, j) - 0.71 * m.h;
-}
-
 void add_disk(const Grid& grid, Vec2 c, double r, BitImage& img) {
   for_disk(grid, c, r, [&](int i, int j) { img.set(i, j, true); });
 }
@@ -132,6 +123,13 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
 }
 
 }  // namespace
+
+double clearance_at(const Model& m, Vec2 p) {
+  const Vec2 q = m.grid.to_px(p);
+  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return 0.0;
+  return clearance_mm(m, i, j) - 0.71 * m.h;
+}
 
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& p) {
   Model m;
