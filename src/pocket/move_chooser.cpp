@@ -514,7 +514,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
               (find_resume(m, stock, pass_start, at, d, si, sj, given_up, 2.0 * m.radius_mm) ||
                find_resume(m, stock, pass_start, at, d, si, sj, given_up));
           if (found) {
-            Vec2 along = Vec2{-d.y, d.x} * static_cast<double>(-m.sigma);  // along the front
+            Vec2 along = perp(d) * static_cast<double>(-m.sigma);  // along the front
             trace_front_upstream(m, stock, at, along);
             jump_to(at, along);
             one_way_resumed = true;

@@ -182,9 +182,7 @@ void trace_front_upstream(const Model& m, const PixelStock& stock, Vec2& at, Vec
   for (double gone = 0.0; gone < m.boundary_round_mm; gone += st) {
     int turn = 80;
     for (; turn >= -60; turn -= 10) {
-      const double r = deg_to_rad(turn) * side;
-      const Vec2 v{back.x * std::cos(r) - back.y * std::sin(r),
-                   back.x * std::sin(r) + back.y * std::cos(r)};
+      const Vec2 v = rotated(back, deg_to_rad(turn) * side);
       const Vec2 q = at + v * st;
       if (!clear_centre(m, stock, q)) continue;
       if (turn < 80) {
