@@ -2,21 +2,14 @@
 // judged by the independent sweep's reading of which side of the motion the material is on.
 #include <gtest/gtest.h>
 
-#include <string>
-
 #include "pocket/adaptive_test_util.h"
 
 namespace swarf {
 namespace {
 
-testing::SweptPath run(const Pocket& p, double tool_d, double stepover_mm, bool climb,
-                       bool one_way) {
-  AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
-  ap.climb = climb;
-  ap.one_way = one_way;
-  return testing::generate_swept(
-      p, tool_d, ap,
-      std::string(climb ? "climb" : "conventional") + (one_way ? ", one way" : ", both ways"));
+// The L's passes for a ø8 at 20 %, climb or conventional, one way or both.
+testing::SweptPath run(const Pocket& p, bool climb, bool one_way) {
+  return testing::generate_swept(p, 8.0, 1.6, {.climb = climb, .one_way = one_way});
 }
 
 void expect_clean(const testing::SweptPath& o) {
@@ -31,8 +24,8 @@ void expect_clean(const testing::SweptPath& o) {
 // 97.6 % climb, 63 reversals per metre against 83, within +-20 % 82.8 % against 86.0 %.
 TEST(AdaptiveOneWay, EveryPassClimbsAndTheCutStaysInTheBand) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const testing::SweptPath both = run(l, 8.0, 1.6, true, false);
-  const testing::SweptPath one = run(l, 8.0, 1.6, true, true);
+  const testing::SweptPath both = run(l, true, false);
+  const testing::SweptPath one = run(l, true, true);
   expect_clean(one);
   EXPECT_GE(one.sweep.climb_share, 0.95);
   EXPECT_GT(one.sweep.climb_share, both.sweep.climb_share + 0.1);
@@ -47,7 +40,7 @@ TEST(AdaptiveOneWay, EveryPassClimbsAndTheCutStaysInTheBand) {
 // The same rule with the mirrored frame: every pass conventional.
 TEST(AdaptiveOneWay, ConventionalOneWayKeepsTheMaterialOnTheLeft) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const testing::SweptPath one = run(l, 8.0, 1.6, false, true);
+  const testing::SweptPath one = run(l, false, true);
   expect_clean(one);
   EXPECT_LE(one.sweep.climb_share, 0.05);
 }

@@ -3,21 +3,14 @@
 // floor pass turning by more than 135 degrees within 1 mm), gouge, residual and band.
 #include <gtest/gtest.h>
 
-#include <string>
-
 #include "pocket/adaptive_test_util.h"
 
 namespace swarf {
 namespace {
 
-testing::SweptPath run(const Pocket& p, double tool_d, double stepover_mm, bool one_way,
-                       bool smooth_links) {
-  AdaptiveParams ap = testing::params_3mm_deep(stepover_mm);
-  ap.one_way = one_way;
-  ap.smooth_links = smooth_links;
-  return testing::generate_swept(p, tool_d, ap,
-                                 std::string(one_way ? "one way" : "both ways") +
-                                     (smooth_links ? ", smooth links" : ", straight links"));
+// The L's passes for a ø8 at 20 %, climb, one way or both, straight or smooth links.
+testing::SweptPath run(const Pocket& p, bool one_way, bool smooth_links) {
+  return testing::generate_swept(p, 8.0, 1.6, {.one_way = one_way, .smooth_links = smooth_links});
 }
 
 // Safe as the straight links are: no gouge, no more material left, no slot.
@@ -36,8 +29,8 @@ double reversals_per_mm(const testing::SweptPath& o) {
 // within +-20 % 86.1 -> 86.9 %, machining 93 -> 95 s (the loops' length at the link feed).
 TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const testing::SweptPath straight = run(l, 8.0, 1.6, false, false);
-  const testing::SweptPath smooth = run(l, 8.0, 1.6, false, true);
+  const testing::SweptPath straight = run(l, false, false);
+  const testing::SweptPath smooth = run(l, false, true);
   expect_as_clean(smooth, straight);
   EXPECT_LT(reversals_per_mm(smooth), 0.7 * reversals_per_mm(straight));
   // The loops cut nothing: the cut and its engagement stay what they were.
@@ -53,8 +46,8 @@ TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
 // passes climb.
 TEST(AdaptiveSmoothLinks, OneWayTurnsBackLessAndStaysClimbAndClean) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
-  const testing::SweptPath straight = run(l, 8.0, 1.6, true, false);
-  const testing::SweptPath smooth = run(l, 8.0, 1.6, true, true);
+  const testing::SweptPath straight = run(l, true, false);
+  const testing::SweptPath smooth = run(l, true, true);
   expect_as_clean(smooth, straight);
   EXPECT_GE(smooth.sweep.climb_share, 0.95);
   EXPECT_LT(reversals_per_mm(smooth), 0.95 * reversals_per_mm(straight));

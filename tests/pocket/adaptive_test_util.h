@@ -99,4 +99,24 @@ inline SweptPath generate_swept(const Pocket& p, double tool_d, const AdaptivePa
   return out;
 }
 
+// How the passes run: the milling side, one way or both, straight or smooth links.
+struct PassRule {
+  bool climb = true;
+  bool one_way = false;
+  bool smooth_links = false;
+};
+
+// The pocket generated with params_3mm_deep(stepover_mm) and `rule`, and swept; the label
+// printed says the rule.
+inline SweptPath generate_swept(const Pocket& p, double tool_d, double stepover_mm, PassRule rule) {
+  AdaptiveParams ap = params_3mm_deep(stepover_mm);
+  ap.climb = rule.climb;
+  ap.one_way = rule.one_way;
+  ap.smooth_links = rule.smooth_links;
+  return generate_swept(p, tool_d, ap,
+                        std::string(rule.climb ? "climb" : "conventional") +
+                            (rule.one_way ? ", one way" : ", both ways") +
+                            (rule.smooth_links ? ", smooth links" : ", straight links"));
+}
+
 }  // namespace swarf::testing
