@@ -95,7 +95,10 @@ double angle_of(const Model& m, int px, double len) {
 // A tool position whose disk reaches past a wall or into an island, by exact geometry (the
 // pixel test would flag the snapped passes, which keep 2 um off the wall, not half a pixel).
 bool gouges_exactly(const Model& m, Vec2 c) {
-  return !m.walls.inside(c) || m.walls.distance(c) < m.radius_mm + m.wall_stock_mm - 1e-6;
+  const double reach = m.radius_mm + m.wall_stock_mm;
+  // Most steps lie far from every wall by the pixels, which need no exact query.
+  if (pocket::far_from_walls(m, c, c, reach)) return false;
+  return !m.walls.inside(c) || m.walls.distance(c) < reach - 1e-6;
 }
 
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
@@ -543,7 +546,9 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // every layer, so found once.
   std::vector<std::vector<Vec2>> via(keep.size());
   for (std::size_t q = 1; q < keep.size(); ++q) {
-    if (lp.jump[keep[q - 1]]) continue;
+    if (lp.jump[keep[q - 1]] ||
+        pocket::far_from_walls(m, lp.pts[keep[q - 1]], lp.pts[keep[q]], reach))
+      continue;
     pocket::keep_off_walls(m.walls, reach, kWallClearanceMm, lp.pts[keep[q - 1]], lp.pts[keep[q]],
                            via[q]);
   }

@@ -64,6 +64,10 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
 /// forbidden pixel, less half a pixel's diagonal, so that a point judged free really is (the
 /// disk test of the stock is the final word); 0 outside the image (entry.cpp).
 double clearance_at(const Model& model, Vec2 p);
+/// Whether the move a-b keeps `reach` off every wall by the pixels' clearance alone (which
+/// reads within two pixels of the exact distance): such a move needs no exact query.
+/// False says nothing; the exact walls decide (entry.cpp).
+bool far_from_walls(const Model& model, Vec2 a, Vec2 b, double reach);
 
 struct Entry {
   Vec2 centre;                   ///< plunge point

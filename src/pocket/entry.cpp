@@ -131,6 +131,16 @@ double clearance_at(const Model& m, Vec2 p) {
   return clearance_mm(m, i, j) - 0.71 * m.h;
 }
 
+bool far_from_walls(const Model& m, Vec2 a, Vec2 b, double reach) {
+  // clearance_at(a) - 1.29 pixels - |ab| >= reach, without the square root (it runs for
+  // most points of the path, several times).
+  const Vec2 q = m.grid.to_px(a);
+  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return false;
+  const double need_px = (reach + distance(a, b)) / m.h + 2.0;
+  return static_cast<double>(m.clearance_sq[m.grid.index(i, j)]) >= need_px * need_px;
+}
+
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& p) {
   Model m;
   m.radius_mm = tool.radius();
