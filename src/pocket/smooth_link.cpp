@@ -254,9 +254,12 @@ bool smooth_link(const Model& m, const PixelStock& stock, Vec2 before_a, Vec2 a,
   const double least_wall =
       std::min({reach + kWallClearanceMm, m.walls.distance(a), m.walls.distance(b)}) - 1e-9;
   // A point whose pixels put it nearer a wall than least_wall is: the wall is no farther
-  // from it than its nearest pixel centre's clearance and half that pixel's diagonal. Such a
-  // candidate is dropped as it is flown, before the exact checks, which would drop it too.
-  auto clear_by_pixels = [&](Vec2 p) { return clearance_at(m, p) + 1.42 * m.h >= least_wall; };
+  // from it than its nearest pixel centre's clearance, half that pixel's diagonal, and the
+  // band of forbidden pixels inside the walls (wall stock and half a pixel, make_model).
+  // Such a candidate is dropped as it is flown, before the exact checks, which would drop
+  // it too.
+  const double band = 1.92 * m.h + m.wall_stock_mm;
+  auto clear_by_pixels = [&](Vec2 p) { return clearance_at(m, p) + band >= least_wall; };
   int checked = 0, flown = 0;
   std::vector<Vec2> pts, whole;
   while (!cands.empty()) {
