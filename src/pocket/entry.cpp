@@ -124,21 +124,27 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
 
 }  // namespace
 
-double clearance_at(const Model& m, Vec2 p) {
+namespace {
+// The squared clearance (px^2) of the pixel nearest p; null outside the image.
+const float* clearance_sq_near(const Model& m, Vec2 p) {
   const Vec2 q = m.grid.to_px(p);
   const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
-  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return 0.0;
-  return clearance_mm(m, i, j) - 0.71 * m.h;
+  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return nullptr;
+  return &m.clearance_sq[m.grid.index(i, j)];
+}
+}  // namespace
+
+double clearance_at(const Model& m, Vec2 p) {
+  const float* c = clearance_sq_near(m, p);
+  return c == nullptr ? 0.0 : std::sqrt(static_cast<double>(*c)) * m.h - 0.71 * m.h;
 }
 
 bool far_from_walls(const Model& m, Vec2 a, Vec2 b, double reach) {
   // clearance_at(a) - 1.29 pixels - |ab| >= reach, without the square root (it runs for
   // most points of the path, several times).
-  const Vec2 q = m.grid.to_px(a);
-  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
-  if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return false;
+  const float* c = clearance_sq_near(m, a);
   const double need_px = (reach + distance(a, b)) / m.h + 2.0;
-  return static_cast<double>(m.clearance_sq[m.grid.index(i, j)]) >= need_px * need_px;
+  return c != nullptr && static_cast<double>(*c) >= need_px * need_px;
 }
 
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& p) {
