@@ -25,8 +25,8 @@ double reversals_per_mm(const testing::SweptPath& o) {
 }
 
 // The L with islands at 0.6 scale (ø8 at 20 %), both ways: most hooks where a pass ends at
-// a wall and the next comes back are loops now. Measured: reversals per metre 82.9 -> 45.8,
-// within +-20 % 86.1 -> 86.9 %, machining 93 -> 95 s (the loops' length at the link feed).
+// a wall and the next comes back are loops now. Measured: reversals per metre 82.9 -> 44.8,
+// within +-20 % 86.1 -> 86.8 %, machining 93 -> 96 s (the loops' length at the link feed).
 TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
   const Pocket l = testing::scaled(testing::load_test_pocket("l_pocket_islands.json"), 0.6);
   const testing::SweptPath straight = run(l, false, false);
@@ -40,7 +40,7 @@ TEST(AdaptiveSmoothLinks, FewerReversalsAndTheCutUnchanged) {
 }
 
 // One way, every pass ends against a wall and the next starts back along the front. The
-// loops take out fewer of the turns there (60.6 -> 51.8 per metre; most likely because a
+// loops take out fewer of the turns there (60.6 -> 51.7 per metre; most likely because a
 // pass that ran into a wall must leave it with a corner, and a loop after a corner needs
 // more room than the floor near the wall has; not proven). The loops stay safe and the
 // passes climb.
