@@ -122,9 +122,6 @@ std::vector<Vec2> tight_centres(const Model& m, const BitImage& free_centres,
   return out;
 }
 
-}  // namespace
-
-namespace {
 // The squared clearance (px^2) of the pixel nearest p; null outside the image.
 const float* clearance_sq_near(const Model& m, Vec2 p) {
   const Vec2 q = m.grid.to_px(p);
@@ -132,6 +129,7 @@ const float* clearance_sq_near(const Model& m, Vec2 p) {
   if (i < 0 || j < 0 || i >= m.grid.width || j >= m.grid.height) return nullptr;
   return &m.clearance_sq[m.grid.index(i, j)];
 }
+
 }  // namespace
 
 double clearance_at(const Model& m, Vec2 p) {
