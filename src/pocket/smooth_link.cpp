@@ -148,7 +148,7 @@ bool fly(Vec2 a, double& heading, double rho, const Word& w, double spacing, std
     const double th0 = th;
     const Vec2 dir{std::cos(th0), std::sin(th0)};
     // An arc's centre lies on its turning side; its heading turns by l / rho.
-    const Vec2 c = p0 + Vec2{-dir.y, dir.x} * (turn * rho);
+    const Vec2 c = p0 + perp(dir) * (turn * rho);
     for (int k = 1; k <= n; ++k) {
       const double l = len * k / n;
       if (turn == 0) {
