@@ -5,7 +5,7 @@
 // least 95 % of the cutting length, with no gouge, no full slot and under 0.5 mm^2 of reachable
 // material left. The adaptive_test.cpp pockets are scaled down (and cut at 20 % stepover) to keep
 // the suite short; these are the sizes bench/RESULTS-pocket.md reports. The L clears the
-// goal by the least (95.054 %, 3.8 mm of its 5614 mm of cut; 94.99 % before session 33 took
+// goal by the least (95.054 %, 3.0 mm of its 5614 mm of cut; 94.99 % before session 33 took
 // the spurs out of the channel crossings' ends, wall_reach.cpp): a third of its misses
 // are the crescents across the two channels 2 mm wider than the tool beside the square
 // island, most of the rest passes meeting a wall at an angle.
