@@ -141,11 +141,12 @@ Result<std::string> execute(const Operation& op, OperationInput input, const Out
   if (!res.toolpaths.empty()) {
     ToolpathMetrics total;
     for (const Toolpath& tp : res.toolpaths) {
-      const ToolpathMetrics m = compute_metrics(tp);
+      const ToolpathMetrics m = compute_metrics(tp, out.machine);
       total.cutting_length_mm += m.cutting_length_mm;
       total.air_length_mm += m.air_length_mm;
       total.lift_offs += m.lift_offs;
       total.machining_time_s += m.machining_time_s;
+      total.machine_time_s += m.machine_time_s;
       total.moves += m.moves;
     }
     json& s = res.summary;
@@ -153,6 +154,7 @@ Result<std::string> execute(const Operation& op, OperationInput input, const Out
     if (!s.contains("air_length_mm")) s["air_length_mm"] = total.air_length_mm;
     if (!s.contains("lift_offs")) s["lift_offs"] = total.lift_offs;
     if (!s.contains("machining_time_s")) s["machining_time_s"] = total.machining_time_s;
+    if (!s.contains("machine_time_s")) s["machine_time_s"] = total.machine_time_s;
     if (!s.contains("moves")) s["moves"] = total.moves;
   }
 

@@ -9,6 +9,7 @@
 #include "cli/operation.h"
 #include "swarf/core/status.h"
 #include "swarf/gcode/gcode.h"
+#include "swarf/toolpath/metrics.h"
 
 namespace swarf::cli {
 
@@ -19,6 +20,8 @@ struct OutputSpec {
   std::string svg;     ///< --svg (also written into the report folder)
   std::string report;  ///< --report folder
   GcodeOptions gcode_options;
+  /// The machine the summary's times are for (--rapid-rate, --accel, --junction-deviation).
+  MetricsOptions machine;
 };
 
 /// How the tool was given: a spec ("flat:10"), a library and number, plus overrides.

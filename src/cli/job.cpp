@@ -1,6 +1,9 @@
 #include "cli/job.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <iterator>
 
 #include "swarf/core/io.h"
 #include "swarf/tool/library.h"
@@ -33,6 +36,35 @@ Result<Tool> tool_from_json(const json& j, const std::string& where, const fs::p
   Result<Tool> t = resolve_tool(spec);
   if (!t.ok()) return t.status().with_context(where);
   return t;
+}
+
+// The machine the summary's times are for: {"rapid_mm_min": > 0, "accel_mm_s2": >= 0,
+// "junction_deviation_mm": >= 0}, each optional.
+Status parse_machine(const json& m, const std::string& job_path, MetricsOptions& out) {
+  if (!m.is_object()) return bad_input(job_path + ": \"machine\" must be an object");
+  struct Field {
+    const char* key;
+    double* value;
+    bool zero_ok;
+  };
+  const Field fields[] = {{"rapid_mm_min", &out.rapid_mm_min, false},
+                          {"accel_mm_s2", &out.accel_mm_s2, true},
+                          {"junction_deviation_mm", &out.junction_deviation_mm, true}};
+  for (auto it = m.begin(); it != m.end(); ++it) {
+    const Field* f = std::find_if(std::begin(fields), std::end(fields),
+                                  [&](const Field& q) { return it.key() == q.key; });
+    if (f == std::end(fields)) {
+      return bad_input(job_path + ": unknown machine key \"" + it.key() +
+                       "\" (rapid_mm_min, accel_mm_s2, junction_deviation_mm)");
+    }
+    const double v = it.value().is_number() ? it.value().get<double>() : -1.0;
+    if (!std::isfinite(v) || v < 0.0 || (v == 0.0 && !f->zero_ok)) {
+      return bad_input(job_path + ": machine." + it.key() + " must be a number " +
+                       (f->zero_ok ? "0 or more" : "over 0"));
+    }
+    *f->value = v;
+  }
+  return {};
 }
 
 }  // namespace
@@ -68,13 +100,14 @@ Status parse_job(std::string_view text, const std::string& job_path, const JobOp
   }
   if (!job.is_object()) return bad_input(job_path + ": expected a JSON object");
   for (auto it = job.begin(); it != job.end(); ++it) {
-    static const char* kKeys[] = {"part", "tool", "stock", "operation", "outputs", "comment"};
+    static const char* kKeys[] = {"part",    "tool",    "stock",  "operation",
+                                  "outputs", "machine", "comment"};
     bool known = false;
     for (const char* k : kKeys)
       known = known || it.key() == k;
     if (!known)
       return bad_input(job_path + ": unknown key \"" + it.key() +
-                       "\" (part, tool, stock, operation, outputs)");
+                       "\" (part, tool, stock, operation, outputs, machine)");
   }
   const fs::path base = fs::path(job_path).parent_path();
   const fs::path out_base = options.output_dir.empty() ? base : fs::path(options.output_dir);
@@ -158,6 +191,7 @@ Status parse_job(std::string_view text, const std::string& job_path, const JobOp
       return bad_input(job_path + ": outputs.line_numbers must be true or false");
     out.gcode_options.line_numbers = outputs["line_numbers"].get<bool>();
   }
+  SWARF_RETURN_IF_ERROR(parse_machine(job.value("machine", json::object()), job_path, out.machine));
   out.gcode_options.title = fs::path(job_path).filename().string();
   return {};
 }

@@ -36,6 +36,17 @@ bool parse_double(const std::string& s, double& out) {
   return ec == std::errc() && ptr == end && std::isfinite(out);
 }
 
+/// A flag whose value must be a number over 0 (or 0 or more, with zero_ok).
+CLI::Validator number_at_least_zero(bool zero_ok) {
+  return CLI::Validator(
+      [zero_ok](const std::string& text) {
+        double v = 0.0;
+        if (parse_double(text, v) && (v > 0.0 || (zero_ok && v == 0.0))) return std::string();
+        return "'" + text + "' must be a number " + (zero_ok ? "0 or more" : "over 0");
+      },
+      zero_ok ? "NUMBER>=0" : "NUMBER>0");
+}
+
 /// Turns the text a user typed for a parameter into its JSON value.
 Result<nlohmann::json> value_from_flag(const Param& p, const std::string& text) {
   const std::string flag = flag_of(p.key);
@@ -186,6 +197,17 @@ void add_operation(CLI::App& app, const Operation& op, OperationFlags& f, Global
     outg->add_option("-o,--output", f.out.gcode, "output file");
   }
   outg->add_option("--csv", f.out.csv, "table of the result as CSV");
+  // The machine the summary's times are estimated for (machining_time_s at the feeds,
+  // machine_time_s also with its acceleration and cornering).
+  auto* mg = sub->add_option_group("Machine");
+  mg->add_option("--rapid-rate", f.out.machine.rapid_mm_min, "rapid traverse, mm/min (default 5000)")
+      ->check(number_at_least_zero(false));
+  mg->add_option("--accel", f.out.machine.accel_mm_s2,
+                 "acceleration, mm/s^2, for machine_time_s (default 1000; 0 = none)")
+      ->check(number_at_least_zero(true));
+  mg->add_option("--junction-deviation", f.out.machine.junction_deviation_mm,
+                 "corner rounding allowed at speed, mm (grbl $11; default 0.01; 0 = exact stop)")
+      ->check(number_at_least_zero(true));
   outg->add_option("--report", f.out.report, "folder for the summary JSON and pictures");
   auto* pg = sub->add_option_group("Operation");
   for (const Param& p : op.params) {

@@ -39,6 +39,7 @@ ToolpathMetrics compute_metrics(const Toolpath& path, const MetricsOptions& opti
       if (move.feed_mm_min > 0.0) m.machining_time_s += len / move.feed_mm_min * 60.0;
     }
   }
+  m.machine_time_s = machine_time_s(path, options);
   return m;
 }
 

@@ -31,6 +31,9 @@ TEST_P(CliRejects, WithExitTwoAMessageAndNoOutput) {
   dir.write("bad-word.nc", "G0 X0 Y0 Z5\nG1 X1 Q\n");
   dir.write("job-syntax.json", "{\"part\": \"a\",, }");
   dir.write("open-pocket.json", R"({"outer": [[0,0],[10,0]], "islands": []})");
+  dir.write("job-machine.json", R"({"part": ")" + kPocket +
+                                    R"(", "tool": "flat:10", "operation": {"type": "contour"},
+      "machine": {"accel_mm_s2": -1000}, "outputs": {"gcode": "o.nc"}})");
   std::string args = GetParam().args;
   for (std::size_t p; (p = args.find("{dir}")) != std::string::npos;)
     args.replace(p, 5, dir.file(""));
@@ -73,7 +76,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"BadToolSpec", "pocket " + kPocket + " --tool flat:-2 -o {dir}o.nc", "tool"},
         Case{"NotANumber", "pocket " + kPocket + " --tool flat:10 --depth deep -o {dir}o.nc",
              "--depth: 'deep' is not a number"},
-        Case{"MissingInput", "rough {dir}nope.stl --tool flat:10 -o {dir}o.nc", "nope.stl"}),
+        Case{"MissingInput", "rough {dir}nope.stl --tool flat:10 -o {dir}o.nc", "nope.stl"},
+        Case{"NegativeAcceleration",
+             "contour " + kPocket + " --tool flat:10 --accel -5 -o {dir}o.nc",
+             "--accel: '-5' must be a number 0 or more"},
+        Case{"NegativeAccelerationInJob", "run {dir}job-machine.json",
+             "job-machine.json: machine.accel_mm_s2 must be a number 0 or more"}),
     [](const ::testing::TestParamInfo<Case>& p) { return std::string(p.param.name); });
 
 TEST(CliOutputs, ASuccessfulRunWritesEveryRequestedFile) {
