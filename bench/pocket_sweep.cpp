@@ -1,12 +1,14 @@
 // Judges any pocket G-code with the independent sweep of tests/pocket/sweep_checker.cpp:
-//   swarf_pocket_sweep [--wall-stock S] [--pixel H] POCKET.json TOOL_DIAMETER
-//                      TARGET_ENGAGEMENT_DEG PROGRAM.nc [SAMPLES.csv [RESIDUAL.csv]]
+//   swarf_pocket_sweep [--wall-stock S] [--pixel H] [--accel MM_S2] [--junction-deviation MM]
+//                      POCKET.json TOOL_DIAMETER TARGET_ENGAGEMENT_DEG PROGRAM.nc
+//                      [SAMPLES.csv [RESIDUAL.csv]]
 // With --wall-stock the pocket is judged shrunk by S mm (Clipper offset, round joins): the
 // tool must keep S off the walls and clear up to there.
 // Prints one line of figures (gouge, residual, cutting length, engagement within +-20 % of
 // the target by contact arc and by removal, largest engagement, full-slot length, machining
-// time, lifts, the most one move at the link feed removes and the most one removes per mm). Used by
-// bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
+// time (at the feeds, and on a machine: by default 1000 mm/s^2 and 0.01 mm of junction
+// deviation), lifts, the most one move at the link feed removes and the most one removes per
+// mm). Used by bench/compare_freecad.sh to put Swarf's adaptive pocket beside FreeCAD's.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -23,16 +25,24 @@
 int main(int argc, char** argv) {
   using namespace swarf;
   double wall_stock = 0.0, pixel = 0.0;
-  while (argc >= 3 &&
-         (std::string(argv[1]) == "--wall-stock" || std::string(argv[1]) == "--pixel")) {
-    (std::string(argv[1]) == "--wall-stock" ? wall_stock : pixel) = std::atof(argv[2]);
+  MetricsOptions machine;
+  while (argc >= 3) {
+    const std::string flag = argv[1];
+    double* value = flag == "--wall-stock"            ? &wall_stock
+                    : flag == "--pixel"               ? &pixel
+                    : flag == "--accel"               ? &machine.accel_mm_s2
+                    : flag == "--junction-deviation" ? &machine.junction_deviation_mm
+                                                      : nullptr;
+    if (value == nullptr) break;
+    *value = std::atof(argv[2]);
     argv += 2;
     argc -= 2;
   }
   if (argc < 5 || argc > 7) {
     std::fprintf(stderr,
-                 "usage: swarf_pocket_sweep [--wall-stock S] [--pixel H] POCKET.json TOOL_DIAMETER "
-                 "TARGET_DEG PROGRAM.nc [SAMPLES.csv [RESIDUAL.csv]]\n");
+                 "usage: swarf_pocket_sweep [--wall-stock S] [--pixel H] [--accel MM_S2] "
+                 "[--junction-deviation MM] POCKET.json TOOL_DIAMETER TARGET_DEG PROGRAM.nc "
+                 "[SAMPLES.csv [RESIDUAL.csv]]\n");
     return 2;
   }
   auto pocket = read_pocket(argv[1]);
@@ -85,7 +95,7 @@ int main(int argc, char** argv) {
       std::fprintf(f, "%.3f,%.3f\n", q.x, q.y);
     std::fclose(f);
   }
-  const ToolpathMetrics m = compute_metrics(*program);
+  const ToolpathMetrics m = compute_metrics(*program, machine);
   // The most one feed move at 5000 mm/min or more (Swarf's link feed, the rapid rate of the
   // time estimates) removes: links over cleared floor should take crumbs of these finer
   // pixels at most.
@@ -112,12 +122,13 @@ int main(int argc, char** argv) {
   const Vec3 dense_at = program->moves.empty() ? Vec3{} : program->moves[dense_move].end;
   std::printf(
       "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
-      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, lifts %d, "
+      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, machine %.0f s, "
+      "lifts %d, "
       "linkcut %.3f mm2 over %.2f mm, densest %.3f mm (%.2f mm to %.3f, %.3f), climb %.1f %%, "
       "reversals %d (%.1f per m), pixel %.4f mm\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
       100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
-      s.slot_length_mm, m.machining_time_s, static_cast<int>(m.lift_offs), link_cut, link_len,
+      s.slot_length_mm, m.machining_time_s, m.machine_time_s, static_cast<int>(m.lift_offs), link_cut, link_len,
       densest, move_len[dense_move], dense_at.x, dense_at.y, 100 * s.climb_share, s.reversals,
       s.floor_length_mm > 0 ? 1000.0 * s.reversals / s.floor_length_mm : 0.0, pixel);
   return 0;

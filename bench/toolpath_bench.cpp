@@ -1,10 +1,11 @@
-// Post-processing and G-code throughput on 10^5-point paths.
+// Post-processing, G-code and machine-time throughput on 10^5-point paths.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
 
 #include "swarf/gcode/gcode.h"
+#include "swarf/toolpath/metrics.h"
 #include "swarf/toolpath/postprocess.h"
 
 namespace swarf {
@@ -96,6 +97,20 @@ void BM_ParseGcode(benchmark::State& state) {
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(g.size()));
 }
 BENCHMARK(BM_ParseGcode)->Unit(benchmark::kMillisecond);
+
+// The acceleration-limited time of 10^5 moves (polygonised circles: a junction every 0.5 mm).
+void BM_MachineTime(benchmark::State& state) {
+  const Toolpath p = polygon_circles();
+  double seconds = 0.0;
+  for (auto _ : state) {
+    seconds = machine_time_s(p);
+    benchmark::DoNotOptimize(seconds);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(p.moves.size()));
+  state.counters["machine_s"] = seconds;
+  state.counters["feed_s"] = compute_metrics(p, {}).machining_time_s;
+}
+BENCHMARK(BM_MachineTime)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace swarf
