@@ -53,10 +53,10 @@ import json, sys
 keys = {
   "pocket": ["machining_time_s", "machine_time_s", "cutting_length_mm", "air_length_mm", "engagement_within_20pct", "engagement_p5_deg", "engagement_p95_deg", "material_left_mm2"],
   "contour": ["machining_time_s", "machine_time_s", "cutting_length_mm", "air_length_mm", "lift_offs"],
-  "surface": ["cl_points", "model_s", "finishing_s", "machining_time_s"],
+  "surface": ["cl_points", "model_s", "finishing_s", "machining_time_s", "machine_time_s"],
   "dropcut": ["cl_points", "max_z_mm"],
   "rest": ["residue_area_mm2", "max_thickness_mm"],
-  "waterline": ["model_s", "contour_s", "machining_time_s"],
+  "waterline": ["model_s", "contour_s", "machining_time_s", "machine_time_s"],
   "rough": ["machining_time_s", "machine_time_s", "lift_offs", "air_length_mm", "total_length_mm", "regions"],
   "simulate": ["machining_time_s", "peak_force_n", "mean_force_n", "collisions"],
 }
