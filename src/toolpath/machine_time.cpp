@@ -1,5 +1,6 @@
 // The time a program takes on a machine that cannot change speed at once: a trapezoidal
-// speed profile along the path with look-ahead, as grbl's and LinuxCNC's planners do.
+// speed profile along the path with look-ahead and grbl's junction deviation at the corners
+// (LinuxCNC rounds corners within its G64 tolerance to much the same effect).
 //
 // The feed-only time (machining_time_s) charges nothing for a reversal; a machine has to
 // stop there and start again, and slows down for every sharp corner. This is what makes a
