@@ -28,11 +28,11 @@ int main(int argc, char** argv) {
   MetricsOptions machine;
   while (argc >= 3) {
     const std::string flag = argv[1];
-    double* value = flag == "--wall-stock"            ? &wall_stock
-                    : flag == "--pixel"               ? &pixel
-                    : flag == "--accel"               ? &machine.accel_mm_s2
+    double* value = flag == "--wall-stock"           ? &wall_stock
+                    : flag == "--pixel"              ? &pixel
+                    : flag == "--accel"              ? &machine.accel_mm_s2
                     : flag == "--junction-deviation" ? &machine.junction_deviation_mm
-                                                      : nullptr;
+                                                     : nullptr;
     if (value == nullptr) break;
     *value = std::atof(argv[2]);
     argv += 2;
@@ -122,14 +122,15 @@ int main(int argc, char** argv) {
   const Vec3 dense_at = program->moves.empty() ? Vec3{} : program->moves[dense_move].end;
   std::printf(
       "gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 %.1f %% (removal %.1f %%) "
-      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, machine %.0f s, "
-      "lifts %d, "
+      "(anymaterial %.1f %%), max engagement %.0f deg, slot %.1f mm, machining %.0f s, "
+      "machine %.0f s, lifts %d, "
       "linkcut %.3f mm2 over %.2f mm, densest %.3f mm (%.2f mm to %.3f, %.3f), climb %.1f %%, "
       "reversals %d (%.1f per m), pixel %.4f mm\n",
       s.max_gouge_mm, s.residual_mm2, s.cutting_length_mm, 100 * s.within_20pct,
       100 * s.within_20pct_removal, 100 * s.within_20pct_any_material, s.max_engagement_deg,
-      s.slot_length_mm, m.machining_time_s, m.machine_time_s, static_cast<int>(m.lift_offs), link_cut, link_len,
-      densest, move_len[dense_move], dense_at.x, dense_at.y, 100 * s.climb_share, s.reversals,
+      s.slot_length_mm, m.machining_time_s, m.machine_time_s, static_cast<int>(m.lift_offs),
+      link_cut, link_len, densest, move_len[dense_move], dense_at.x, dense_at.y,
+      100 * s.climb_share, s.reversals,
       s.floor_length_mm > 0 ? 1000.0 * s.reversals / s.floor_length_mm : 0.0, pixel);
   return 0;
 }

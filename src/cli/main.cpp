@@ -200,7 +200,8 @@ void add_operation(CLI::App& app, const Operation& op, OperationFlags& f, Global
   // The machine the summary's times are estimated for (machining_time_s at the feeds,
   // machine_time_s also with its acceleration and cornering).
   auto* mg = sub->add_option_group("Machine");
-  mg->add_option("--rapid-rate", f.out.machine.rapid_mm_min, "rapid traverse, mm/min (default 5000)")
+  mg->add_option("--rapid-rate", f.out.machine.rapid_mm_min,
+                 "rapid traverse, mm/min (default 5000)")
       ->check(number_at_least_zero(false));
   mg->add_option("--accel", f.out.machine.accel_mm_s2,
                  "acceleration, mm/s^2, for machine_time_s (default 1000; 0 = none)")
