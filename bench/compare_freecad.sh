@@ -11,19 +11,7 @@ cd "$(dirname "$0")/.."
 build=${1:-build/release}
 source bench/pocket_common.sh
 need_freecad
-python3 - "$tmp/star.json" <<'PY'
-import json, math, sys
-pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
-        (50 if k % 2 == 0 else 24) * math.sin(math.pi * k / 5 + math.pi / 2)] for k in range(10)]
-json.dump({"outer": pts, "islands": []}, open(sys.argv[1], "w"))
-PY
-# Six round islands 1 mm (room) from the walls (the case where Algorithm 4 used to slot).
-python3 - "$tmp/islands.json" <<'PY'
-import json, math, sys
-isl = [[[15 + 25 * i + 4 * math.cos(math.pi * k / 16), 15 + 30 * j + 4 * math.sin(math.pi * k / 16)]
-        for k in range(32)] for i in range(3) for j in range(2)]
-json.dump({"outer": [[0, 0], [80, 0], [80, 60], [0, 60]], "islands": isl}, open(sys.argv[1], "w"))
-PY
+bench_shapes "$tmp"
 cpu() { /usr/bin/time -f "%U %S" -o "$tmp/t" "$@" >/dev/null 2>&1; awk '{printf "%.3f", $1 + $2}' "$tmp/t"; }
 printf "| pocket | generator | CPU s | within +-20 %% (arc) | (removal) | (arc, any material) | max eng. deg | slot mm | machining s | on a machine s | residual mm^2 | gouge mm | climb | reversals per m |\n"
 printf "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"

@@ -15,3 +15,20 @@ need_freecad() {
 target_deg() {
   awk -v d="$1" -v s="$2" 'BEGIN { r = d / 2; printf "%.4f", atan2(sqrt(1 - (1 - s / r)^2), 1 - s / r) * 180 / 3.141592653589793 }'
 }
+# bench_shapes DIR: the two benchmark pockets made in code, DIR/star.json (R50 / R24, five
+# points) and DIR/islands.json (80 x 60 with six round islands 1 mm of room from the walls,
+# the case where Algorithm 4 used to slot).
+bench_shapes() {
+  python3 - "$1/star.json" <<'PY'
+import json, math, sys
+pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
+        (50 if k % 2 == 0 else 24) * math.sin(math.pi * k / 5 + math.pi / 2)] for k in range(10)]
+json.dump({"outer": pts, "islands": []}, open(sys.argv[1], "w"))
+PY
+  python3 - "$1/islands.json" <<'PY'
+import json, math, sys
+isl = [[[15 + 25 * i + 4 * math.cos(math.pi * k / 16), 15 + 30 * j + 4 * math.sin(math.pi * k / 16)]
+        for k in range(32)] for i in range(3) for j in range(2)]
+json.dump({"outer": [[0, 0], [80, 0], [80, 60], [0, 60]], "islands": isl}, open(sys.argv[1], "w"))
+PY
+}
