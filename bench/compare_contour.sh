@@ -16,11 +16,7 @@ bench_shapes "$tmp"
 machine_s() { "$@" 2>&1 | sed -nE 's/.*machine_time_s=([0-9.]+).*/\1/p'; }
 printf "| pocket | depth mm | adaptive, 1 layer s | contour, 1 layer s | its largest engagement deg / slot mm | contour, stepdown D/2 s | adaptive faster than contour 1 layer / D/2 |\n"
 printf "|---|---|---|---|---|---|---|\n"
-for spec in "L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|10" \
-            "Kiri:Moto 40x40, D10|tests/data/pocket/kirimoto_pocket.json|10" \
-            "star R50/24, D10|$tmp/star.json|10" \
-            "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6" \
-            "80x60 + 6 islands 1 mm from walls, D10|$tmp/islands.json|10"; do
+for spec in "${bench_pockets[@]}"; do
   IFS="|" read -r name file d <<<"$spec"
   so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
   half=$(awk -v d="$d" 'BEGIN { print 0.5 * d }')

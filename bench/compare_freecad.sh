@@ -23,11 +23,7 @@ row() {  # name generator cpu sweep-line
            v["within20"], v["removal"], v["anymaterial"], v["engagement"], v["slot"],
            v["machining"], v["machine"], v["residual"], v["gouge"], v["climb"], rpm }'
 }
-for spec in "L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|10" \
-            "Kiri:Moto 40x40, D10|tests/data/pocket/kirimoto_pocket.json|10" \
-            "star R50/24, D10|$tmp/star.json|10" \
-            "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6" \
-            "80x60 + 6 islands 1 mm from walls, D10|$tmp/islands.json|10"; do
+for spec in "${bench_pockets[@]}"; do
   IFS="|" read -r name file d <<<"$spec"
   so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
   target=$(target_deg "$d" "$so")

@@ -17,8 +17,14 @@ target_deg() {
 }
 # bench_shapes DIR: the two benchmark pockets made in code, DIR/star.json (R50 / R24, five
 # points) and DIR/islands.json (80 x 60 with six round islands 1 mm of room from the walls,
-# the case where Algorithm 4 used to slot).
+# the case where Algorithm 4 used to slot), and `bench_pockets`, the five benchmark pockets
+# as "name|file|tool diameter".
 bench_shapes() {
+  bench_pockets=("L 100x80 + 2 islands, D10|tests/data/pocket/l_pocket_islands.json|10"
+                 "Kiri:Moto 40x40, D10|tests/data/pocket/kirimoto_pocket.json|10"
+                 "star R50/24, D10|$1/star.json|10"
+                 "PCB-vice bar slice, D6|tests/data/pocket/pcbvicebar_slice.json|6"
+                 "80x60 + 6 islands 1 mm from walls, D10|$1/islands.json|10")
   python3 - "$1/star.json" <<'PY'
 import json, math, sys
 pts = [[(50 if k % 2 == 0 else 24) * math.cos(math.pi * k / 5 + math.pi / 2),
