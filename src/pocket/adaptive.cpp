@@ -435,8 +435,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const double tol = params.simplify_tolerance_mm > 0.0 ? params.simplify_tolerance_mm : 0.25 * m.h;
   const double reach = m.radius_mm + m.wall_stock_mm;
   auto chord_ok = [&](std::size_t a, std::size_t b) {
-    return pocket::far_from_walls(m, lp.pts[a], lp.pts[b], reach) ||
-           m.walls.segment_distance(lp.pts[a], lp.pts[b]) >= reach - 1e-7;
+    return pocket::keeps_off_walls(m, lp.pts[a], lp.pts[b], reach - 1e-7);
   };
   // Runs also break where a step's engagement crosses the neck plunges' thresholds
   // (kNeckTightDeg and kNeckSlotDeg, neck_runs): an output move is judged by what its steps remove

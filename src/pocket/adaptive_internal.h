@@ -68,6 +68,9 @@ double clearance_at(const Model& model, Vec2 p);
 /// reads within two pixels of the exact distance): such a move needs no exact query.
 /// False says nothing; the exact walls decide (entry.cpp).
 bool far_from_walls(const Model& model, Vec2 a, Vec2 b, double reach);
+/// Whether the move a-b keeps at least `least` off every wall: by the pixels where they
+/// tell (far_from_walls), else by the exact walls (entry.cpp).
+bool keeps_off_walls(const Model& model, Vec2 a, Vec2 b, double least);
 
 struct Entry {
   Vec2 centre;                   ///< plunge point

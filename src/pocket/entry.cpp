@@ -145,6 +145,10 @@ bool far_from_walls(const Model& m, Vec2 a, Vec2 b, double reach) {
   return c != nullptr && static_cast<double>(*c) >= need_px * need_px;
 }
 
+bool keeps_off_walls(const Model& m, Vec2 a, Vec2 b, double least) {
+  return far_from_walls(m, a, b, least) || m.walls.segment_distance(a, b) >= least;
+}
+
 Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveParams& p) {
   Model m;
   m.radius_mm = tool.radius();

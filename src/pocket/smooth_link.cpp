@@ -285,9 +285,7 @@ bool smooth_link(const Model& m, const PixelStock& stock, Vec2 before_a, Vec2 a,
     bool ok = true;
     Vec2 prev = a;
     for (std::size_t k = 0; k < pts.size() && ok; ++k) {
-      ok = (far_from_walls(m, prev, pts[k], least_wall) ||
-            m.walls.segment_distance(prev, pts[k]) >= least_wall) &&
-           stock.probe(prev, pts[k], 0) == 0;
+      ok = keeps_off_walls(m, prev, pts[k], least_wall) && stock.probe(prev, pts[k], 0) == 0;
       prev = pts[k];
     }
     if (!ok) continue;

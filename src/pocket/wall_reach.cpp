@@ -471,7 +471,9 @@ void drop_spurs(const Model& m, LinkedPath& lp) {
 void keep_chords_off_walls(const Model& m, LinkedPath& lp) {
   const double on = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
   const double reach = m.radius_mm + m.wall_stock_mm;
-  auto clear = [&](Vec2 a, Vec2 b) { return m.walls.segment_distance(a, b) >= reach - 1e-9; };
+  // Most moves lie far from every wall by the pixels' clearance: those need no exact query
+  // (it cost 8 % of the L's CPU on every move).
+  auto clear = [&](Vec2 a, Vec2 b) { return keeps_off_walls(m, a, b, reach - 1e-9); };
   // The offset point nearest the middle of a and b, if it keeps clear of every wall.
   auto onto_offset = [&](Vec2 a, Vec2 b, Vec2& s) {
     const Vec2 mid = (a + b) * 0.5, foot = m.walls.nearest(mid);
@@ -487,10 +489,8 @@ void keep_chords_off_walls(const Model& m, LinkedPath& lp) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = lp.pts[i], b = lp.pts[i + 1];
     between.clear();
-    // Most moves lie far from every wall by the pixels' clearance: those need no exact
-    // query (it cost 8 % of the L's CPU on every move).
-    if (!lp.jump[i] && !far_from_walls(m, a, b, reach) && !clear(a, b) &&
-        m.walls.distance(a) >= reach - 1e-9 && m.walls.distance(b) >= reach - 1e-9) {
+    if (!lp.jump[i] && !clear(a, b) && m.walls.distance(a) >= reach - 1e-9 &&
+        m.walls.distance(b) >= reach - 1e-9) {
       // Depth-first halving, left half first, so `between` comes out in path order.
       struct Piece {
         Vec2 a, b;
