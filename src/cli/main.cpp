@@ -36,15 +36,15 @@ bool parse_double(const std::string& s, double& out) {
   return ec == std::errc() && ptr == end && std::isfinite(out);
 }
 
-/// A flag whose value must be a number over 0 (or 0 or more, with zero_ok).
-CLI::Validator number_at_least_zero(bool zero_ok) {
+/// A flag whose value must be a number over 0 (or 0 as well, with or_zero).
+CLI::Validator number_over_zero(bool or_zero) {
   return CLI::Validator(
-      [zero_ok](const std::string& text) {
+      [or_zero](const std::string& text) {
         double v = 0.0;
-        if (parse_double(text, v) && (v > 0.0 || (zero_ok && v == 0.0))) return std::string();
-        return "'" + text + "' must be a number " + (zero_ok ? "0 or more" : "over 0");
+        if (parse_double(text, v) && (v > 0.0 || (or_zero && v == 0.0))) return std::string();
+        return "'" + text + "' must be a number " + (or_zero ? "0 or more" : "over 0");
       },
-      zero_ok ? "NUMBER>=0" : "NUMBER>0");
+      or_zero ? "NUMBER>=0" : "NUMBER>0");
 }
 
 /// Turns the text a user typed for a parameter into its JSON value.
@@ -202,13 +202,13 @@ void add_operation(CLI::App& app, const Operation& op, OperationFlags& f, Global
   auto* mg = sub->add_option_group("Machine");
   mg->add_option("--rapid-rate", f.out.machine.rapid_mm_min,
                  "rapid traverse, mm/min (default 5000)")
-      ->check(number_at_least_zero(false));
+      ->check(number_over_zero(false));
   mg->add_option("--accel", f.out.machine.accel_mm_s2,
                  "acceleration, mm/s^2, for machine_time_s (default 1000; 0 = none)")
-      ->check(number_at_least_zero(true));
+      ->check(number_over_zero(true));
   mg->add_option("--junction-deviation", f.out.machine.junction_deviation_mm,
                  "corner rounding allowed at speed, mm (grbl $11; default 0.01; 0 = exact stop)")
-      ->check(number_at_least_zero(true));
+      ->check(number_over_zero(true));
   outg->add_option("--report", f.out.report, "folder for the summary JSON and pictures");
   auto* pg = sub->add_option_group("Operation");
   for (const Param& p : op.params) {
