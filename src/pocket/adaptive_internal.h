@@ -45,9 +45,19 @@ struct Model {
   double boundary_round_mm = 0.0;  ///< a full boundary traversal, for termination
   double want_helix_mm = 0.0;      ///< helix radius asked for (it shrinks where less fits)
   bool straight_plunge = true;     ///< AdaptiveParams::straight_plunge
-  PolygonSet region;               ///< the pocket (outer ring, islands), exact
-  WallIndex walls;                 ///< region's edges on a grid, for the exact-geometry checks
-  double wall_stock_mm = 0.0;      ///< left on walls and islands
+  /// How far a link over cleared floor keeps the tool's edge off a wall it runs along,
+  /// beyond the wall stock (path_postprocess.cpp): what the passes leave on a wall lies
+  /// below the pixels, the scallops between the arrivals of fronts that meet it at an angle
+  /// (up to wall_scallop_mm high; higher ones are taken off by wall_rides.cpp) and a skin of
+  /// up to half a pixel, and a link on the wall's exact offset grazes all of it at the link
+  /// feed (session 48: the PCB-vice bar's links and rides along its diagonal walls, 133 mm at
+  /// 3-5 degrees by a sweep at half the default pixel). wall_scallop_mm (0.1 mm where that
+  /// is 0), and at least a pixel: past the skin, and four times the default simplification
+  /// tolerance, so that the lift survives it.
+  double link_lift_mm = 0.1;
+  PolygonSet region;           ///< the pocket (outer ring, islands), exact
+  WallIndex walls;             ///< region's edges on a grid, for the exact-geometry checks
+  double wall_stock_mm = 0.0;  ///< left on walls and islands
   double pocket_area_mm2 = 0.0;
   Grid grid;
   BitImage pocket;     ///< pixel centres inside the pocket

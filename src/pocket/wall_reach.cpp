@@ -89,13 +89,24 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
   const std::size_t n = lp.pts.size();
   std::vector<Vec2> foot(n);
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  // A link lifted off a wall (apply_lifted) stands for one on its offset: it no longer
+  // cuts the wall, but it did when the passes before it were made, and snapping them as the
+  // last ones there bent them onto the wall (PCB-vice bar: 1.3 points of the band).
+  const double lifted_link = on + m.link_lift_mm + 0.5 * m.h;
+  auto is_link = [&](std::size_t j) {
+    return j > 0 && lp.kind[j - 1] == StepKind::kLink && !lp.jump[j - 1];
+  };
   for (std::size_t k = 0; k < n; ++k) {
     // Only points within on + wide of a wall are looked at: the rest, most of them, are
     // known to lie farther by the pixels.
-    if (far_from_walls(m, lp.pts[k], lp.pts[k], on + wide)) continue;
+    if (far_from_walls(m, lp.pts[k], lp.pts[k], is_link(k) ? lifted_link : on + wide)) continue;
     foot[k] = m.walls.nearest(lp.pts[k]);
     dist[k] = distance(lp.pts[k], foot[k]);
   }
+  // The distance a later point stands for, as the snapping of earlier ones sees it.
+  auto eff = [&](std::size_t j) {
+    return is_link(j) && dist[j] < lifted_link ? std::min(dist[j], on) : dist[j];
+  };
   // The points near a wall, by the cell of their foot on it (cells of kLastPassReach x R).
   const double cell = kLastPassReach * m.radius_mm;
   auto cell_of = [&](Vec2 v) {
@@ -104,7 +115,7 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
   };
   std::map<std::pair<long, long>, std::vector<std::size_t>> near_wall;
   for (std::size_t k = 0; k < n; ++k)
-    if (dist[k] < on + wide) near_wall[cell_of(foot[k])].push_back(k);
+    if (eff(k) < on + wide) near_wall[cell_of(foot[k])].push_back(k);
   auto last_pass = [&](std::size_t k) {
     const auto [cx, cy] = cell_of(foot[k]);
     for (long dx = -1; dx <= 1; ++dx) {
@@ -112,7 +123,7 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
         const auto it = near_wall.find({cx + dx, cy + dy});
         if (it == near_wall.end()) continue;
         for (const std::size_t j : it->second) {
-          if (j > k && dist[j] < dist[k] - 0.25 * m.h && distance(foot[j], foot[k]) < cell)
+          if (j > k && eff(j) < dist[k] - 0.25 * m.h && distance(foot[j], foot[k]) < cell)
             return false;
         }
       }
