@@ -172,6 +172,14 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
   std::vector<double> d(n, 0.0), want(n, kFar), step(n, 0.0);
   std::vector<Vec2> foot(n);
   want[n - 1] = 0.0;
+  // Whether the move into chain[k] removes material: asked once each (a point asks of the
+  // moves either side, its neighbour of one of the same).
+  std::vector<std::int8_t> removes(n, -1);
+  const auto removes_into = [&](std::size_t k) {
+    if (removes[k] < 0)
+      removes[k] = stock.probe(k == 0 ? from : chain[k - 1], chain[k], 0) != 0 ? 1 : 0;
+    return removes[k] == 1;
+  };
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2 prev = k == 0 ? from : chain[k - 1];
     step[k] = distance(prev, chain[k]);
@@ -179,9 +187,7 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
     foot[k] = m.walls.nearest(chain[k]);
     d[k] = distance(chain[k], foot[k]);
     want[k] = d[k];
-    if (d[k] < 1e-9 || stock.probe(prev, chain[k], 0) != 0 ||
-        stock.probe(chain[k], chain[k + 1], 0) != 0)
-      continue;
+    if (d[k] < 1e-9 || removes_into(k) || removes_into(k + 1)) continue;
     const Vec2 unit = (chain[k] - foot[k]) / d[k];
     // The whole lift, else half of it, else a quarter.
     const double full = reach + m.link_lift_mm;
