@@ -1,6 +1,7 @@
 #include "sweep_checker.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -39,6 +40,14 @@ double edge_distance(const PolygonSet& s, Vec2 p) {
       best = std::min(best, segment_distance(p, r[i], r[(i + 1) % r.size()]));
   return best;
 }
+// Whether segments pq and ab cross (properly; touching counts as not).
+bool segments_cross(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {
+  auto side = [](Vec2 o, Vec2 u, Vec2 v) { return cross(u - o, v - o); };
+  const double d1 = side(a, b, p), d2 = side(a, b, q), d3 = side(p, q, a), d4 = side(p, q, b);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
+         d4 != 0;
+}
+enum class RingState : unsigned char { kBeyondWall, kEngaged, kOther, kUnknown, kEngagedGuess };
 
 struct Sample {
   Vec2 p;
@@ -165,11 +174,20 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   // with tol (the residual), so cells farther than both from every edge keep "far". Blocks
   // of cells farther than that (by their centre's distance less their half diagonal) are
   // skipped, and the rest measure against the edges near their block only.
+  // Cells outside the pocket get theirs too (the engagement's ring asks which side of a
+  // wall a point within a pixel of it lies on). Each block also keeps the edges that pass
+  // within a pixel of it, for that.
   constexpr float kFar = std::numeric_limits<float>::max();
   std::vector<float> wall_d(cell.size(), kFar);
+  constexpr int kBlock = 16;
+  const int blocks_x = (w + kBlock - 1) / kBlock;
+  std::vector<std::vector<std::pair<Vec2, Vec2>>> block_edges(static_cast<std::size_t>(blocks_x) *
+                                                              ((ht + kBlock - 1) / kBlock));
+  auto block_of = [&](int i, int j) {
+    return static_cast<std::size_t>(j / kBlock) * blocks_x + i / kBlock;
+  };
   {
     const double near = std::max(R, tol) + 2 * h;
-    constexpr int kBlock = 16;
     const double half_diag = kBlock * h * std::sqrt(2.0) / 2;
     std::vector<std::pair<Vec2, Vec2>> edges, local;
     for (const Ring& r : region.rings)
@@ -182,10 +200,12 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         for (const auto& e : edges)
           if (segment_distance(mid, e.first, e.second) <= near + half_diag) local.push_back(e);
         if (local.empty()) continue;
+        for (const auto& e : local)
+          if (segment_distance(mid, e.first, e.second) <= 2 * h + half_diag)
+            block_edges[block_of(bi, bj)].push_back(e);
         for (int j = bj; j < std::min(ht, bj + kBlock); ++j)
           for (int i = bi; i < std::min(w, bi + kBlock); ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * w + i;
-            if (cell[k] == 0) continue;
             double best = std::numeric_limits<double>::infinity();
             for (const auto& e : local)
               best = std::min(best, segment_distance(centre(i, j), e.first, e.second));
@@ -193,6 +213,24 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
           }
       }
   }
+  // Whether a point lies in the pocket, exactly: its cell's side, or within a pixel of a
+  // wall the side of a cell centre off the edges (one on an edge has its side by the fill's
+  // half-open rule, not the point's: this cell or a neighbour), changed by each edge
+  // between the two. (i, j): the point's cell.
+  auto point_inside = [&](Vec2 q, int i, int j) {
+    const std::size_t c = static_cast<std::size_t>(j) * w + i;
+    if (!(wall_d[c] < h)) return cell[c] != 0;
+    int ri = i, rj = j;
+    for (int n = 0; n < 9 && wall_d[static_cast<std::size_t>(rj) * w + ri] < 1e-9; ++n) {
+      ri = std::clamp(i + n % 3 - 1, 0, w - 1);
+      rj = std::clamp(j + n / 3 - 1, 0, ht - 1);
+    }
+    bool in = cell[static_cast<std::size_t>(rj) * w + ri] != 0;
+    const Vec2 cc = centre(ri, rj);
+    for (const auto& [a, b] : block_edges[block_of(i, j)])
+      if (segments_cross(cc, q, a, b)) in = !in;
+    return in;
+  };
   // The tool disk stamped on an image: the cells whose centres lie within R that hold
   // `from` become `to`. Each call visits, row by row, only the cells outside the previous
   // call's disk on the same image: those inside it hold `from` no longer (nothing else
@@ -282,38 +320,149 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
     rep.max_gouge_mm = std::max(rep.max_gouge_mm, gouge);
     double sample_eng = -1.0;
     if (!s.entry && !s.rapid) {
-      // Engagement: front half of a circle just outside the tool, 1 degree apart.
-      int n = 0, n_any = 0, n_left = 0;
+      // Engagement: front half of a circle just outside the tool, 1 degree apart, ring
+      // sample k (0..179) at k - 89.5 degrees from the heading. Along a wall the circle would
+      // cross the wall before the tool's edge does (acos(R / (R + h/2)), 5.7 degrees for a
+      // ø10 at 0.05 mm), and which cells there count as inside depends on the wall's side and
+      // slant: the same ride read 34-35 degrees along the bottom and left walls of a
+      // rectangle and 26-27 along the top and right ones (session 47). Near a wall each ring
+      // point's side is found by exact geometry, and a ray whose ring point lies beyond the
+      // wall while the tool's edge does not reads as the material next to it along the ring:
+      // a ride's band runs on to the wall, an arrival's sliver too (below).
       const double rr = R + 0.5 * h;
       const double base = std::atan2(s.dir.y, s.dir.x);
-      for (int k = -89; k <= 90; ++k) {
-        const double a = base + deg_to_rad(k - 0.5);
-        const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
+      std::array<RingState, 180> ring{};
+      int n_any = 0;
+      for (int k = 0; k < 180; ++k) {
+        const double a = base + deg_to_rad(k - 89.5);
+        const Vec2 u{std::cos(a), std::sin(a)};
+        const Vec2 q = s.p + u * rr;
         const int i = static_cast<int>(std::lround((q.x - box.min.x) / h));
         const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
-        if (i >= 0 && j >= 0 && i < w && j < ht && cell[static_cast<std::size_t>(j) * w + i] == 1) {
-          ++n_any;
-          if (ever[static_cast<std::size_t>(j) * w + i] == 2) {
-            ++n;
-            n_left += k > 0 ? 1 : 0;  // counter-clockwise of the heading: its left
+        if (i < 0 || j < 0 || i >= w || j >= ht) {
+          ring[k] = RingState::kBeyondWall;
+          continue;
+        }
+        n_any += cell[static_cast<std::size_t>(j) * w + i] == 1 ? 1 : 0;
+        if (wall_d[static_cast<std::size_t>(j) * w + i] < h && !point_inside(q, i, j)) {
+          // Beyond the wall while the tool's edge is not: the material between them is
+          // thinner than half a pixel, and no cell reads it (the runs below).
+          const Vec2 edge = s.p + u * R;
+          const int ei = static_cast<int>(std::lround((edge.x - box.min.x) / h));
+          const int ej = static_cast<int>(std::lround((edge.y - box.min.y) / h));
+          ring[k] = ei >= 0 && ej >= 0 && ei < w && ej < ht && point_inside(edge, ei, ej)
+                        ? RingState::kUnknown
+                        : RingState::kBeyondWall;
+          continue;
+        }
+        const std::size_t c = static_cast<std::size_t>(j) * w + i;
+        // A point inside whose cell is not (within half a pixel of the wall) is not known
+        // either.
+        ring[k] = cell[c] == 0                   ? RingState::kUnknown
+                  : cell[c] == 1 && ever[c] == 2 ? RingState::kEngaged
+                                                 : RingState::kOther;
+      }
+      // A gap of one or two cut samples between engaged ones (or ones not known yet) is the
+      // ring's rounding to cells: towards the sides of the front half the ring runs within
+      // h/2 of the disks already swept, and a cell up to h/sqrt(2) nearer the tool than its
+      // point can lie in one (a ride along a wall at 30 degrees lost 3-12 degrees of its
+      // band so). Filled, it splits no run.
+      auto engaged_or_unknown = [&](int k) {
+        return k >= 0 && k < 180 &&
+               (ring[k] == RingState::kEngaged || ring[k] == RingState::kUnknown);
+      };
+      for (int k = 1; k < 179; ++k) {
+        if (ring[k] != RingState::kOther || !engaged_or_unknown(k - 1)) continue;
+        const int next = engaged_or_unknown(k + 1)                                       ? k + 1
+                         : ring[k + 1] == RingState::kOther && engaged_or_unknown(k + 2) ? k + 2
+                                                                                         : -1;
+        for (int t = k; t < next; ++t)
+          ring[t] = RingState::kEngagedGuess;
+      }
+      for (RingState& st : ring)
+        if (st == RingState::kEngagedGuess) st = RingState::kEngaged;
+      // Runs of engaged samples and samples not known (beyond a wall the tool's edge has not
+      // reached). A run with nothing engaged reads nothing. A run whose unknown samples lie
+      // at one end, against the wall, and whose other end meets cut material is material
+      // along the wall, read from that other end: its edge lies (R + h/2) cos(phi) from the
+      // centre along the wall's normal, phi the end's angle from that normal, and the tool's
+      // edge meets it acos((R + h/2) cos(phi) / R) from the normal (exact for a band along a
+      // straight wall, however thin: a hair the ring touches at one cell reads its few
+      // degrees, not the whole unknown stretch), never more than its length. Any other run
+      // reads its length.
+      double eng = 0.0, eng_left = 0.0;
+      for (int k = 0; k < 180;) {
+        if (ring[k] != RingState::kEngaged && ring[k] != RingState::kUnknown) {
+          ++k;
+          continue;
+        }
+        int e = k, engaged = 0, left = 0;
+        for (; e < 180 && (ring[e] == RingState::kEngaged || ring[e] == RingState::kUnknown); ++e) {
+          engaged += ring[e] == RingState::kEngaged ? 1 : 0;
+          left += e >= 90 ? 1 : 0;
+        }
+        --e;
+        const int size = e - k + 1;
+        double read = engaged > 0 ? size : 0.0;
+        if (engaged > 0 && engaged < size) {
+          int unknown_lo = 0, unknown_hi = 0;
+          while (ring[k + unknown_lo] == RingState::kUnknown)
+            ++unknown_lo;
+          while (ring[e - unknown_hi] == RingState::kUnknown)
+            ++unknown_hi;
+          const bool wall_lo =
+              unknown_lo > 0 && unknown_hi == 0 && e < 179 && unknown_lo + engaged == size;
+          const bool wall_hi =
+              unknown_hi > 0 && unknown_lo == 0 && k > 0 && unknown_hi + engaged == size;
+          if (wall_lo || wall_hi) {
+            // The wall: the edge nearest to the outermost unknown sample's ring point.
+            const int out_k = wall_lo ? k : e;
+            const double a = base + deg_to_rad(out_k - 89.5);
+            const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
+            const int qi =
+                std::clamp(static_cast<int>(std::lround((q.x - box.min.x) / h)), 0, w - 1);
+            const int qj =
+                std::clamp(static_cast<int>(std::lround((q.y - box.min.y) / h)), 0, ht - 1);
+            double best = std::numeric_limits<double>::infinity();
+            Vec2 foot{};
+            for (const auto& [ea, eb] : block_edges[block_of(qi, qj)]) {
+              const double dist = segment_distance(q, ea, eb);
+              if (dist < best) {
+                best = dist;
+                const Vec2 ab = eb - ea;
+                foot = ea + ab * (dot(s.p - ea, ab) / std::max(norm_sq(ab), 1e-300));
+              }
+            }
+            const double line_d = norm(foot - s.p);
+            if (best < h && line_d > 1e-9) {
+              const Vec2 nrm = (foot - s.p) / line_d;
+              const double far = base + deg_to_rad(wall_lo ? e - 89.0 : k - 90.0);
+              const double x =
+                  rr * dot(nrm, Vec2{std::cos(far), std::sin(far)});  // (R + h/2) cos(phi)
+              // Never more than the run with its unknown stretch (a wall whose normal lies
+              // elsewhere, as round an island's corner, is not the band's).
+              read = std::min(read, rad_to_deg(std::acos(std::clamp(x / R, -1.0, 1.0))));
+            }
           }
         }
+        eng += read;
+        eng_left += size > 0 ? read * left / size : 0.0;  // counter-clockwise of the heading
+        k = e + 1;
       }
       if (n_any > 2) {
         cutting_any += s.ds;
         if (std::abs(n_any - target_deg) <= 0.2 * target_deg) within_any += s.ds;
       }
-      const double eng = n;
       sample_eng = eng;
       if (eng > 2.0) {
         rep.cutting_length_mm += s.ds;
         if (std::abs(eng - target_deg) <= 0.2 * target_deg) within += s.ds;
         rep.max_engagement_deg = std::max(rep.max_engagement_deg, eng);
         if (eng >= 170.0) rep.slot_length_mm += s.ds;
-        const int n_right = n - n_left;
-        if (3 * std::max(n_left, n_right) >= 2 * n) {
+        const double eng_right = eng - eng_left;
+        if (3 * std::max(eng_left, eng_right) >= 2 * eng) {
           one_sided_mm += s.ds;
-          climb_mm += n_right > n_left ? s.ds : 0.0;
+          climb_mm += eng_right > eng_left ? s.ds : 0.0;
         }
       }
     }

@@ -150,6 +150,76 @@ TEST(SweepChecker, ClimbShareReadsWhichSideOfTheMotionTheMaterialIsOn) {
   EXPECT_GT(climb.climb_share, 0.99);
 }
 
+// The arc is read on a ring half a pixel outside the tool, which crosses a wall the tool
+// rides along before the tool's edge does (acos(R / (R + h/2)), 5.7 degrees for a ø10 at
+// 0.05 mm), and cells centred on a wall count as inside on its low-x and low-y sides only:
+// the same ride read 34-35 degrees along the bottom and left walls of a rectangle and 26-27
+// along the top and right ones (session 47). A 60 x 40 rectangle, upright and turned 30
+// degrees, cleared by a zigzag and a lap that keep the tool's edge 0.85 mm off the walls, then
+// one ride round the walls: every wall reads the closed form acos((R - 0.85) / R).
+TEST(SweepChecker, ARideAlongAWallReadsItsClosedFormOnEverySideAndSlant) {
+  const double r = 5.0, band = 0.85;
+  const double closed_form = rad_to_deg(std::acos((r - band) / r));  // 33.9
+  for (const double turn_deg : {0.0, 30.0}) {
+    const double c = std::cos(deg_to_rad(turn_deg)), s = std::sin(deg_to_rad(turn_deg));
+    auto at = [&](double x, double y) { return Vec2{c * x - s * y, s * x + c * y}; };
+    const PolygonSet box{{Ring{at(0, 0), at(60, 0), at(60, 40), at(0, 40)}}};
+    Toolpath tp;
+    auto floor = [&](MoveKind kind, double x, double y) {
+      const Vec2 p = at(x, y);
+      return move_to(kind, {p.x, p.y, -1});
+    };
+    const double lo = r + band;
+    tp.moves.push_back(move_to(MoveKind::kRapid, {at(lo, lo).x, at(lo, lo).y, 5}));
+    tp.moves.push_back(floor(MoveKind::kPlunge, lo, lo));
+    for (int row = 0; row <= 6; ++row) {
+      const double y = lo + row * (40 - 2 * lo) / 6;
+      if (row > 0) tp.moves.push_back(floor(MoveKind::kFeed, row % 2 == 1 ? 60 - lo : lo, y));
+      tp.moves.push_back(floor(MoveKind::kFeed, row % 2 == 0 ? 60 - lo : lo, y));
+    }
+    // A lap round the zigzag's ends, from where it ends, leaves the band's edge straight.
+    for (const auto& [x, y] :
+         {std::pair{lo, 40 - lo}, {lo, lo}, {60 - lo, lo}, {60 - lo, 40 - lo}, {lo, 40 - lo}})
+      tp.moves.push_back(floor(MoveKind::kFeed, x, y));
+    tp.moves.push_back(floor(MoveKind::kFeed, r, 40 - r));
+    const std::size_t ride = tp.moves.size();
+    for (const auto& [x, y] : {std::pair{r, r}, {60 - r, r}, {60 - r, 40 - r}, {r, 40 - r}})
+      tp.moves.push_back(floor(MoveKind::kFeed, x, y));
+    std::vector<testing::SweepSample> samples;
+    testing::sweep_check(box, r, tp, closed_form, 0.05, 0.0, &samples);
+    // Each wall away from the corners, where the previous ride's band is gone.
+    for (std::size_t wall = 0; wall < 4; ++wall) {
+      double sum = 0.0;
+      int n = 0;
+      for (const auto& q : samples) {
+        if (q.move != ride + wall) continue;
+        const Vec2 p{c * q.position.x + s * q.position.y, -s * q.position.x + c * q.position.y};
+        const bool across_x = wall % 2 == 1;  // the left wall first, then the bottom one
+        const double t = across_x ? p.x : p.y, len = across_x ? 60.0 : 40.0;
+        if (t < 15 || t > len - 15) continue;
+        EXPECT_NEAR(q.engagement_deg, closed_form, 1.5) << turn_deg << " wall " << wall << " " << t;
+        sum += q.engagement_deg;
+        ++n;
+      }
+      ASSERT_GT(n, 150) << wall;
+      EXPECT_NEAR(sum / n, closed_form, 0.5) << turn_deg << " wall " << wall;
+    }
+  }
+}
+
+// A slot down a channel 0.1 mm wider than the tool takes the whole front half: the ring
+// crosses both walls, and read as it lies it counted 168 degrees, under the 170 of a slot.
+TEST(SweepChecker, ASlotInAChannelBarelyWiderThanTheToolReadsAFullSlot) {
+  const PolygonSet channel{{Ring{{0, 0}, {40, 0}, {40, 10.1}, {0, 10.1}}}};
+  Toolpath tp;
+  tp.moves = {move_to(MoveKind::kRapid, {5.05, 5.05, 5}),
+              move_to(MoveKind::kPlunge, {5.05, 5.05, -1}),
+              move_to(MoveKind::kFeed, {34.95, 5.05, -1})};
+  const auto s = testing::sweep_check(channel, 5.0, tp, 36.87, 0.05, 0.0);
+  EXPECT_GT(s.slot_length_mm, 29.5);  // of 29.9
+  EXPECT_GT(s.max_engagement_deg, 178.0);
+}
+
 // Reversals: where the floor pass turns back by more than 135 degrees within a millimetre,
 // G0 moves along the floor (another generator's keep-tool-down links) included; a half
 // circle of radius 3 turns as far but over 9.4 mm, and is not one.
