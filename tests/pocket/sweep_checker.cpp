@@ -176,7 +176,7 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
   // skipped, and the rest measure against the edges near their block only.
   // Cells outside the pocket get theirs too (the engagement's ring asks which side of a
   // wall a point within a pixel of it lies on). Each block also keeps the edges that pass
-  // within a pixel of it, for that.
+  // within two pixels of it, for that.
   constexpr float kFar = std::numeric_limits<float>::max();
   std::vector<float> wall_d(cell.size(), kFar);
   constexpr int kBlock = 16;
