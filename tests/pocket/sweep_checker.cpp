@@ -47,7 +47,7 @@ bool segments_cross(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
          d4 != 0;
 }
-enum class RingState : unsigned char { kBeyondWall, kEngaged, kOther, kUnknown, kEngagedGuess };
+enum class RingState : unsigned char { kBeyondWall, kEngaged, kOther, kUnknown };
 
 struct Sample {
   Vec2 p;
@@ -197,12 +197,12 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
       for (int bi = 0; bi < w; bi += kBlock) {
         const Vec2 mid = centre(bi, bj) + Vec2{0.5 * (kBlock - 1) * h, 0.5 * (kBlock - 1) * h};
         local.clear();
-        for (const auto& e : edges)
-          if (segment_distance(mid, e.first, e.second) <= near + half_diag) local.push_back(e);
+        for (const auto& e : edges) {
+          const double dist = segment_distance(mid, e.first, e.second);
+          if (dist <= near + half_diag) local.push_back(e);
+          if (dist <= 2 * h + half_diag) block_edges[block_of(bi, bj)].push_back(e);
+        }
         if (local.empty()) continue;
-        for (const auto& e : local)
-          if (segment_distance(mid, e.first, e.second) <= 2 * h + half_diag)
-            block_edges[block_of(bi, bj)].push_back(e);
         for (int j = bj; j < std::min(ht, bj + kBlock); ++j)
           for (int i = bi; i < std::min(w, bi + kBlock); ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * w + i;
@@ -213,6 +213,12 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
           }
       }
   }
+  // The cell nearest to q, as (i, j); false where it lies off the image.
+  auto nearest_cell = [&](Vec2 q, int& i, int& j) {
+    i = static_cast<int>(std::lround((q.x - box.min.x) / h));
+    j = static_cast<int>(std::lround((q.y - box.min.y) / h));
+    return i >= 0 && j >= 0 && i < w && j < ht;
+  };
   // Whether a point lies in the pocket, exactly: its cell's side, or within a pixel of a
   // wall the side of a cell centre off the edges (one on an edge has its side by the fill's
   // half-open rule, not the point's: this cell or a neighbour), changed by each edge
@@ -337,25 +343,23 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
         const double a = base + deg_to_rad(k - 89.5);
         const Vec2 u{std::cos(a), std::sin(a)};
         const Vec2 q = s.p + u * rr;
-        const int i = static_cast<int>(std::lround((q.x - box.min.x) / h));
-        const int j = static_cast<int>(std::lround((q.y - box.min.y) / h));
-        if (i < 0 || j < 0 || i >= w || j >= ht) {
+        int i = 0, j = 0;
+        if (!nearest_cell(q, i, j)) {
           ring[k] = RingState::kBeyondWall;
           continue;
         }
-        n_any += cell[static_cast<std::size_t>(j) * w + i] == 1 ? 1 : 0;
-        if (wall_d[static_cast<std::size_t>(j) * w + i] < h && !point_inside(q, i, j)) {
+        const std::size_t c = static_cast<std::size_t>(j) * w + i;
+        n_any += cell[c] == 1 ? 1 : 0;
+        if (wall_d[c] < h && !point_inside(q, i, j)) {
           // Beyond the wall while the tool's edge is not: the material between them is
           // thinner than half a pixel, and no cell reads it (the runs below).
           const Vec2 edge = s.p + u * R;
-          const int ei = static_cast<int>(std::lround((edge.x - box.min.x) / h));
-          const int ej = static_cast<int>(std::lround((edge.y - box.min.y) / h));
-          ring[k] = ei >= 0 && ej >= 0 && ei < w && ej < ht && point_inside(edge, ei, ej)
+          int ei = 0, ej = 0;
+          ring[k] = nearest_cell(edge, ei, ej) && point_inside(edge, ei, ej)
                         ? RingState::kUnknown
                         : RingState::kBeyondWall;
           continue;
         }
-        const std::size_t c = static_cast<std::size_t>(j) * w + i;
         // A point inside whose cell is not (within half a pixel of the wall) is not known
         // either.
         ring[k] = cell[c] == 0                   ? RingState::kUnknown
@@ -377,10 +381,8 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
                          : ring[k + 1] == RingState::kOther && engaged_or_unknown(k + 2) ? k + 2
                                                                                          : -1;
         for (int t = k; t < next; ++t)
-          ring[t] = RingState::kEngagedGuess;
+          ring[t] = RingState::kEngaged;  // the gap's end is engaged or unknown: nothing chains
       }
-      for (RingState& st : ring)
-        if (st == RingState::kEngagedGuess) st = RingState::kEngaged;
       // Runs of engaged samples and samples not known (beyond a wall the tool's edge has not
       // reached). A run with nothing engaged reads nothing. A run whose unknown samples lie
       // at one end, against the wall, and whose other end meets cut material is material
@@ -419,10 +421,10 @@ SweepReport sweep_check(const PolygonSet& region, double R, const Toolpath& path
             const int out_k = wall_lo ? k : e;
             const double a = base + deg_to_rad(out_k - 89.5);
             const Vec2 q = s.p + Vec2{std::cos(a), std::sin(a)} * rr;
-            const int qi =
-                std::clamp(static_cast<int>(std::lround((q.x - box.min.x) / h)), 0, w - 1);
-            const int qj =
-                std::clamp(static_cast<int>(std::lround((q.y - box.min.y) / h)), 0, ht - 1);
+            int qi = 0, qj = 0;
+            nearest_cell(q, qi, qj);
+            qi = std::clamp(qi, 0, w - 1);
+            qj = std::clamp(qj, 0, ht - 1);
             double best = std::numeric_limits<double>::infinity();
             Vec2 foot{};
             for (const auto& [ea, eb] : block_edges[block_of(qi, qj)]) {
