@@ -95,7 +95,7 @@ std::optional<testing::SweepReport> swept_cli_program(const BenchmarkPocket& bp)
 
 class BenchmarkPockets : public ::testing::TestWithParam<BenchmarkPocket> {};
 
-TEST_P(BenchmarkPockets, HoldTheBandOverNinetyFivePercentOfTheCut) {
+TEST_P(BenchmarkPockets, HoldTheBandOverTheShareEachReaches) {
   const auto s = swept_cli_program(GetParam());
   ASSERT_TRUE(s.has_value());
   std::printf("  %s: within +-20 %% over %.3f %% of %.0f mm of cut\n", GetParam().name,
