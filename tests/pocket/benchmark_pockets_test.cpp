@@ -5,11 +5,12 @@
 // over at least 95 % of the cutting length, with no gouge, no full slot and under 0.5 mm^2 of
 // reachable material left. The adaptive_test.cpp pockets are scaled down (and cut at 20 %
 // stepover) to keep the suite short; these are the sizes bench/RESULTS-pocket.md reports.
-// Two fall short, by the sweep as corrected in session 49 (it read the arc lost where the
+// One falls short, by the sweep as corrected in session 49 (it read the arc lost where the
 // tool runs along a wall differently on each side of the pocket, and missed the grazes of
-// the skin the passes leave on the walls): the L with islands at 94.88 % (95.05 % before the
-// correction) and the star at 94.79 % (95.6 %). Their floors are what they reach; the other
-// three hold 95 % (Kiri:Moto 95.4, the plain L 97.3, the PCB-vice bar 95.8).
+// the skin the passes leave on the walls): the L with islands at 94.91 % (95.05 % before the
+// correction). Its floor is what it reaches; the other four hold 95 % (Kiri:Moto 95.4, the
+// plain L 97.3, the PCB-vice bar 95.8, and the star 95.17 % since session 50 narrowed the
+// last-pass snapping band; 94.79 % before).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -110,7 +111,7 @@ INSTANTIATE_TEST_SUITE_P(
                                       0.948},
                       BenchmarkPocket{"KiriMoto", "kirimoto_pocket.json", 10.0, 1.0},
                       BenchmarkPocket{"PlainL", "", 10.0, 1.0, plain_l_json},
-                      BenchmarkPocket{"Star", "", 10.0, 1.0, star_json, 0.947},
+                      BenchmarkPocket{"Star", "", 10.0, 1.0, star_json},
                       BenchmarkPocket{"PcbViceBar", "pcbvicebar_slice.json", 6.0, 0.6}),
     [](const ::testing::TestParamInfo<BenchmarkPocket>& p) { return std::string(p.param.name); });
 
