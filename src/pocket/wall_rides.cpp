@@ -256,11 +256,11 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
   };
   // The same, kept Model::link_lift_mm off the walls between its ends: the way runs over
   // the cleared floor at the link feed, and along a wall's exact offset it grazed the skin
-  // that the passes leave there (random pocket 2033, ø16 at 40 %: a way round an island's
-  // corner to a dab, there and back, took 0.06 mm^2 at 2-5 degrees by the sweep once the
-  // passes riding a wall were snapped from a pixel off instead of 1.25). Each end steps
-  // square off its wall to the lift first (where the room is there); the plain way where
-  // the lifted one does not keep off the walls.
+  // that the passes leave there (random pocket 2033, ø16 at 40 %: a way round a convex
+  // corner of the wall to a dab, there and back, took 0.06 mm^2 at 2-5 degrees by the sweep once
+  // the passes riding a wall were snapped from a pixel off instead of 1.25). Each end steps square
+  // off its wall to the lift first (where the room is there); the plain way where the lifted one
+  // does not keep off the walls.
   const double lifted = reach + kWallClearanceMm + m.link_lift_mm;
   auto lift_off = [&](Vec2 p) {
     const double d = m.walls.distance(p);
