@@ -241,18 +241,22 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
     ride.pts = std::move(pts);
     lp.design_cut_ends.insert(lp.design_cut_ends.end(), ride.pts.begin() + 1, ride.pts.end());
   }
+  // Whether the moves from a through `way` stay in the pocket and off the walls.
+  auto keeps_clear = [&](Vec2 a, const std::vector<Vec2>& way) {
+    for (std::size_t k = 0; k < way.size(); ++k) {
+      if (!m.walls.inside(way[k]) ||
+          m.walls.segment_distance(k == 0 ? a : way[k - 1], way[k]) < reach - 1e-7)
+        return false;
+    }
+    return true;
+  };
   // The way from a to b over the cleared floor: straight, or round the walls in its way
   // (points pushed off them), b last; empty when neither keeps off the walls.
   auto way_between = [&](Vec2 a, Vec2 b) {
     std::vector<Vec2> way;
     keep_off_walls(m.walls, reach, kWallClearanceMm, a, b, way);
     way.push_back(b);
-    for (std::size_t k = 0; k < way.size(); ++k) {
-      if (!m.walls.inside(way[k]) ||
-          m.walls.segment_distance(k == 0 ? a : way[k - 1], way[k]) < reach - 1e-7)
-        return std::vector<Vec2>{};
-    }
-    return way;
+    return keeps_clear(a, way) ? way : std::vector<Vec2>{};
   };
   // The same, kept Model::link_lift_mm off the walls between its ends: the way runs over
   // the cleared floor at the link feed, and along a wall's exact offset it grazed the skin
@@ -276,12 +280,7 @@ bool ride_walls_over_scallops(const Model& m, const PixelStock& after, double sc
     keep_off_walls(m.walls, lifted - kWallClearanceMm, kWallClearanceMm, a1, b1, way);
     if (distance(b1, b) > 0.0) way.push_back(b1);
     way.push_back(b);
-    for (std::size_t k = 0; k < way.size(); ++k) {
-      if (!m.walls.inside(way[k]) ||
-          m.walls.segment_distance(k == 0 ? a : way[k - 1], way[k]) < reach - 1e-7)
-        return way_between(a, b);
-    }
-    return way;
+    return keeps_clear(a, way) ? way : way_between(a, b);
   };
   // Each ride as a visit from the last move of the path whose tool comes within two pixels
   // of the material it takes, there and back from that move's point nearest to it: no later
