@@ -149,34 +149,24 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
   std::map<std::pair<long, long>, std::vector<std::size_t>> near_wall;
   for (std::size_t k = 0; k < n; ++k)
     if (eff(k) < on + look) near_wall[cell_of(foot[k])].push_back(k);
-  auto last_pass = [&](std::size_t k) {
+  // Whether a later point near the wall within `cell` of k's foot stands for a distance
+  // under `below`.
+  auto later_nearer = [&](std::size_t k, double below) {
     const auto [cx, cy] = cell_of(foot[k]);
     for (long dx = -1; dx <= 1; ++dx) {
       for (long dy = -1; dy <= 1; ++dy) {
         const auto it = near_wall.find({cx + dx, cy + dy});
         if (it == near_wall.end()) continue;
         for (const std::size_t j : it->second) {
-          if (j > k && eff(j) < dist[k] - 0.25 * m.h && distance(foot[j], foot[k]) < cell)
-            return false;
-        }
-      }
-    }
-    return true;
-  };
-  // A later point of the path rides the wall (within the riding band) at k's foot.
-  auto ridden_later = [&](std::size_t k) {
-    const auto [cx, cy] = cell_of(foot[k]);
-    for (long dx = -1; dx <= 1; ++dx) {
-      for (long dy = -1; dy <= 1; ++dy) {
-        const auto it = near_wall.find({cx + dx, cy + dy});
-        if (it == near_wall.end()) continue;
-        for (const std::size_t j : it->second) {
-          if (j > k && eff(j) < on + riding && distance(foot[j], foot[k]) < cell) return true;
+          if (j > k && eff(j) < below && distance(foot[j], foot[k]) < cell) return true;
         }
       }
     }
     return false;
   };
+  auto last_pass = [&](std::size_t k) { return !later_nearer(k, dist[k] - 0.25 * m.h); };
+  // A later point of the path rides the wall (within the riding band) at k's foot.
+  auto ridden_later = [&](std::size_t k) { return later_nearer(k, on + riding); };
   // A point pushed out of the walls is where two walls (or a wall and an island) meet
   // within a tool diameter: in a corner, where the passes that ran towards it leave slivers
   // thinner than a pixel between their disks, which the re-simulation reads as cut. The
