@@ -94,6 +94,16 @@ Result<OperationOutput> run(const OperationInput& in) {
   out.summary["layers"] = r->layers;
   out.summary["retracts_per_layer"] = r->retracts_per_layer;
   out.summary["material_left_mm2"] = r->material_left_mm2;
+  // Said when it is more than crumbs: the random pockets leave up to 0.5 mm^2 in corners.
+  const double crumbs_mm2 = std::max(1.0, 1e-4 * area(pocket->region));
+  if (r->material_left_mm2 > crumbs_mm2) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%.1f mm^2 that the tool reaches is left uncut (material_left_mm2; the "
+                  "report's picture shows where)",
+                  r->material_left_mm2);
+    out.notes.push_back(text);
+  }
   // Said only when there is one: it needs a centre-cutting end mill.
   if (r->straight_plunges > 0) {
     out.summary["straight_plunges"] = r->straight_plunges;

@@ -146,6 +146,23 @@ constexpr double kWallCrumbMm = 0.25;
 bool find_resume(const Model& model, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir,
                  int& pi, int& pj, BitImage& given_up, double window_mm = 0.0);
 
+/// The free tool centres (pixel centres clear of the forbidden pixels by the tool radius) by
+/// connected component (8 neighbours): a label per pixel, -1 where not free, and the pixels
+/// of each component.
+struct CentreComponents {
+  std::vector<int> label;
+  std::vector<std::size_t> size;
+  std::size_t free = 0;  ///< free pixels in all
+};
+CentreComponents label_centre_components(const Model& model);
+
+/// After a new entry at `centre`: clears `given_up` where the tool, working from the entry's
+/// component of free centres, may change what a resume finds (material within 3 R and a step
+/// of it); all of it where the entry is not on a free pixel or its component holds every
+/// free centre (our addition, resume_search.cpp).
+void forget_given_up_near(const Model& model, const CentreComponents& components, Vec2 centre,
+                          BitImage& given_up);
+
 /// One way (AdaptiveParams::one_way): from a free point `at` beside the material front,
 /// facing along it in the milling direction `dir`, backs up the front (against dir, hugging
 /// it at a standoff of about half a pixel, in steps of two delta_step) to where it begins: a

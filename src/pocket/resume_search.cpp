@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pocket/adaptive_internal.h"
+#include "pocket/distance_transform.h"
 
 namespace swarf::pocket {
 
@@ -196,6 +197,66 @@ void trace_front_upstream(const Model& m, const PixelStock& stock, Vec2& at, Vec
     if (turn == 80 || turn < -60) break;
   }
   dir = -back;
+}
+
+CentreComponents label_centre_components(const Model& m) {
+  const int w = m.grid.width, h = m.grid.height;
+  const double r_px = m.radius_mm / m.h;
+  const auto r_sq = static_cast<float>(r_px * r_px);
+  CentreComponents cc;
+  cc.label.assign(m.clearance_sq.size(), -1);
+  std::vector<std::size_t> todo;
+  for (std::size_t seed = 0; seed < cc.label.size(); ++seed) {
+    if (cc.label[seed] >= 0 || m.clearance_sq[seed] < r_sq) continue;
+    const int id = static_cast<int>(cc.size.size());
+    std::size_t n = 0;
+    cc.label[seed] = id;
+    todo.push_back(seed);
+    while (!todo.empty()) {
+      const std::size_t q = todo.back();
+      todo.pop_back();
+      ++n;
+      const int i = static_cast<int>(q % static_cast<std::size_t>(w));
+      const int j = static_cast<int>(q / static_cast<std::size_t>(w));
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          const int ii = i + di, jj = j + dj;
+          if (ii < 0 || jj < 0 || ii >= w || jj >= h) continue;
+          const std::size_t nq = m.grid.index(ii, jj);
+          if (cc.label[nq] >= 0 || m.clearance_sq[nq] < r_sq) continue;
+          cc.label[nq] = id;
+          todo.push_back(nq);
+        }
+      }
+    }
+    cc.size.push_back(n);
+    cc.free += n;
+  }
+  return cc;
+}
+
+void forget_given_up_near(const Model& m, const CentreComponents& cc, Vec2 centre,
+                          BitImage& given_up) {
+  const Vec2 q = m.grid.to_px(centre);
+  const int i = static_cast<int>(std::lround(q.x)), j = static_cast<int>(std::lround(q.y));
+  const bool on_grid = i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height;
+  const int id = on_grid ? cc.label[m.grid.index(i, j)] : -1;
+  if (id < 0 || cc.size[static_cast<std::size_t>(id)] == cc.free) {
+    given_up = BitImage(m.grid.width, m.grid.height);
+    return;
+  }
+  // The component's pixels, grown by what its cuts can change: the disks of its centres (R),
+  // and the disks of resume points within R of those (2 R more), a step and two pixels.
+  BitImage mine(m.grid.width, m.grid.height);
+  const auto w = static_cast<std::size_t>(m.grid.width);
+  for (std::size_t k = 0; k < cc.label.size(); ++k) {
+    if (cc.label[k] == id) mine.set(static_cast<int>(k % w), static_cast<int>(k / w), true);
+  }
+  const BitImage near = dilate_by_disk(mine, (3.0 * m.radius_mm + m.step_mm) / m.h + 2.0);
+  for (int jj = 0; jj < given_up.height(); ++jj) {
+    for (int wd = 0; wd < given_up.words_per_row(); ++wd)
+      given_up.set_word(jj, wd, given_up.word(jj, wd) & ~near.word(jj, wd));
+  }
 }
 
 }  // namespace swarf::pocket

@@ -2,11 +2,15 @@
 // judged by the independent sweep.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <tuple>
+#include <vector>
 
+#include "pocket/adaptive_internal.h"
 #include "pocket/adaptive_test_util.h"
+#include "swarf/pocket/pocket_input.h"
 
 namespace swarf {
 namespace {
@@ -49,6 +53,97 @@ TEST(AdaptiveResume, AChannelIsClearedFromOneFrontAtATimeNotInTurns) {
     EXPECT_LE(r.sweep.residual_mm2, 0.5) << file;
     EXPECT_EQ(r.sweep.slot_length_mm, 0.0) << file;
   }
+}
+
+// A plate of nx x ny round islands ø6 at a 15 mm pitch, 9 mm from the walls and from each
+// other: a ø10 passes between none of them, so its centres fall into separate chambers,
+// one between each four islands and one between each two and the wall, each entered on its
+// own.
+Pocket plate_of_islands(int nx, int ny) {
+  std::vector<Ring> islands;
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      Ring ring;
+      for (int k = 0; k < 24; ++k) {
+        const double a = 2.0 * 3.141592653589793 * k / 24.0;
+        ring.push_back({12.0 + 15.0 * i + 3.0 * std::cos(a), 12.0 + 15.0 * j + 3.0 * std::sin(a)});
+      }
+      islands.push_back(ring);
+    }
+  }
+  const double w = 24.0 + 15.0 * (nx - 1), h = 24.0 + 15.0 * (ny - 1);
+  return make_pocket({{0, 0}, {w, 0}, {w, h}, {0, h}}, islands, "plate of islands").value();
+}
+
+// Each chamber takes a dozen sessions (its entry, then resumes round its islands). The
+// sessions were bounded at 200 in all, and every new entry made the crumbs of all the
+// chambers before it resumable again: a plate of 4 x 3 islands kept 1321 mm^2 that the tool
+// reaches (8 x 6: 7092 mm^2, and no note said so). Found in session 53.
+TEST(AdaptiveResume, EveryChamberOfAPlateOfIslandsCloserThanTheToolIsCleared) {
+  const Pocket p = plate_of_islands(4, 3);
+  auto r = adaptive_pocket(p, testing::flat_mill(10.0), testing::params_3mm_deep(1.0));
+  ASSERT_TRUE(r.ok()) << r.status().to_string();
+  const testing::SweptPath s = testing::swept(p, 10.0, *r);
+  std::printf("  plate 4 x 3: lifts %zu, residual %.2f mm2 (generator %.2f)\n", s.metrics.lift_offs,
+              s.sweep.residual_mm2, r->material_left_mm2);
+  EXPECT_LE(s.sweep.max_gouge_mm, 1e-6);
+  EXPECT_LE(s.sweep.residual_mm2, 0.5);
+  EXPECT_LE(r->material_left_mm2, 0.5);
+  EXPECT_GE(s.metrics.lift_offs, 15U);  // a way into each chamber: they are apart
+}
+
+// After a new entry, the material given up on is tried again only where the entry's chamber
+// (its component of free tool centres) can reach it: two rooms joined by a neck 8 mm wide,
+// which a ø10 does not pass.
+TEST(AdaptiveResume, ANewEntryRetriesOnlyWhatItsChamberReaches) {
+  const Pocket two = make_pocket({{0, 0},
+                                  {30, 0},
+                                  {30, 11},
+                                  {60, 11},
+                                  {60, 0},
+                                  {90, 0},
+                                  {90, 30},
+                                  {60, 30},
+                                  {60, 19},
+                                  {30, 19},
+                                  {30, 30},
+                                  {0, 30}},
+                                 {}, "two rooms")
+                         .value();
+  auto m = pocket::make_model(two, testing::flat_mill(10.0), testing::params_3mm_deep(1.0));
+  ASSERT_TRUE(m.ok()) << m.status().to_string();
+  const pocket::CentreComponents cc = pocket::label_centre_components(*m);
+  ASSERT_EQ(cc.size.size(), 2U);
+  EXPECT_EQ(cc.size[0] + cc.size[1], cc.free);
+  auto given_up_at = [&](const pocket::BitImage& g, Vec2 world) {
+    const Vec2 q = m->grid.to_px(world);
+    return g.get(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
+  };
+  auto all_given_up = [&] {
+    pocket::BitImage g(m->grid.width, m->grid.height);
+    for (int j = 0; j < g.height(); ++j)
+      g.set_span(j, 0, g.width() - 1);
+    return g;
+  };
+  pocket::BitImage g = all_given_up();
+  pocket::forget_given_up_near(*m, cc, {15, 15}, g);
+  EXPECT_FALSE(given_up_at(g, {15, 15}));  // the entry's room
+  EXPECT_FALSE(given_up_at(g, {2, 2}));    // its corner, a tool radius from any centre
+  EXPECT_TRUE(given_up_at(g, {75, 15}));   // the other room: nothing there has changed
+  EXPECT_TRUE(given_up_at(g, {88, 28}));
+  // An entry off the free pixel centres (a tight centre) retries everything, as before.
+  pocket::BitImage off = all_given_up();
+  pocket::forget_given_up_near(*m, cc, {45, 15}, off);
+  EXPECT_EQ(off.count_all(), 0U);
+  // One room: all of it.
+  const Pocket one = make_pocket({{0, 0}, {30, 0}, {30, 30}, {0, 30}}, {}, "one room").value();
+  auto m1 = pocket::make_model(one, testing::flat_mill(10.0), testing::params_3mm_deep(1.0));
+  ASSERT_TRUE(m1.ok());
+  pocket::BitImage g1(m1->grid.width, m1->grid.height);
+  for (int j = 0; j < g1.height(); ++j)
+    g1.set_span(j, 0, g1.width() - 1);
+  pocket::forget_given_up_near(*m1, pocket::label_centre_components(*m1), {15, 15}, g1);
+  EXPECT_EQ(g1.count_all(), 0U);
 }
 
 }  // namespace

@@ -77,6 +77,27 @@ TEST(PocketCli, StraightPlungeIsCountedAndCanBeTurnedOff) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("off.nc")));
 }
 
+// Reachable material left uncut is said, not only counted in the summary: a square chamber
+// just wider than a ø6 behind a 3 mm neck, with --no-straight-plunge (no helix or ramp fits
+// there). Where everything is cut, nothing is said.
+TEST(PocketCli, MaterialLeftUncutIsSaid) {
+  testing::TempDir dir;
+  dir.write("chamber.json",
+            R"({"outer": [[0, 0], [40, 0], [40, 13.5], [43, 13.5], [43, 11.875], [49.25, 11.875],
+                          [49.25, 18.125], [43, 18.125], [43, 16.5], [40, 16.5], [40, 30],
+                          [0, 30]]})");
+  const std::string common = "pocket " + dir.file("chamber.json") + " --tool flat:6 --depth 3 ";
+  const auto off = testing::run_swarf(common + "--no-straight-plunge -o " + dir.file("off.nc") +
+                                      " --report " + dir.file("rep"));
+  ASSERT_EQ(off.status, 0) << off.out;
+  const auto j = nlohmann::json::parse(testing::read_file(dir.file("rep/summary.json")));
+  EXPECT_GT(j.at("material_left_mm2").get<double>(), 25.0);  // the chamber, 6.25 mm square
+  EXPECT_NE(off.out.find("left uncut"), std::string::npos) << off.out;
+  const auto on = testing::run_swarf(common + "-o " + dir.file("on.nc"));
+  ASSERT_EQ(on.status, 0) << on.out;
+  EXPECT_EQ(on.out.find("left uncut"), std::string::npos) << on.out;
+}
+
 // The Kiri:Moto pocket (ø10 at 2 mm, 3 mm deep) through the CLI with `flags`, its G-code
 // read back and swept; no gouge beyond the pixels, no slot.
 testing::SweepReport kirimoto_swept(const testing::TempDir& dir, const std::string& name,
