@@ -142,17 +142,16 @@ Result<Pocket> make_pocket(Ring outer, std::vector<Ring> islands, std::string_vi
 
 namespace pocket {
 
-Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view source) {
-  if (loops.empty()) return bad_input(std::string(source) + ": no closed outline found");
-  std::size_t outer = 0;
-  for (std::size_t i = 1; i < loops.size(); ++i)
-    if (std::abs(ring_area(loops[i])) > std::abs(ring_area(loops[outer]))) outer = i;
-  std::vector<Ring> islands;
-  for (std::size_t i = 0; i < loops.size(); ++i)
-    if (i != outer) islands.push_back(std::move(loops[i]));
-  auto p = make_pocket(loops[outer], islands, source);
+namespace {
+
+// One outline of a drawing and the loops inside it: the largest loop is the outer boundary,
+// the others islands.
+Result<Pocket> pocket_from_outline(Ring outer_loop, std::vector<Ring> islands,
+                                   std::string_view source) {
+  const Ring outer = outer_loop;
+  auto p = make_pocket(std::move(outer_loop), islands, source);
   if (!p.ok() || p->notes.empty()) return p;
-  const PolygonSet outline = normalized(PolygonSet{{loops[outer]}});
+  const PolygonSet outline = normalized(PolygonSet{{outer}});
   // A drawing's loops have no roles but their sizes. A loop inside the outline, touching it
   // or another loop, is a boss; one that crosses the outline, partly outside it, may as well
   // be part of the pocket drawn as a second shape as a boss on the wall: refused rather than
@@ -167,6 +166,63 @@ Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view sourc
     }
   }
   return p;
+}
+
+}  // namespace
+
+// A drawing may hold several outlines side by side (separate pockets drawn together): a
+// loop that lies outside every larger loop, and neither crosses nor touches one, starts an
+// outline of its own; every other loop is an island of the largest outline it lies in or
+// meets (the checks of one outline then refuse what is not an island). Several outlines
+// are one region in several parts, largest first, each entered on its own.
+Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view source) {
+  if (loops.empty()) return bad_input(std::string(source) + ": no closed outline found");
+  std::stable_sort(loops.begin(), loops.end(), [](const Ring& a, const Ring& b) {
+    return std::abs(ring_area(a)) > std::abs(ring_area(b));
+  });
+  struct Outline {
+    Ring outer;
+    PolygonSet shape;
+    std::vector<Ring> islands;
+  };
+  std::vector<Outline> outlines;
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    Ring& loop = loops[k];
+    const PolygonSet shape = normalized(PolygonSet{{loop}});
+    Outline* in = nullptr;
+    for (std::size_t j = 0; j < outlines.size() && in == nullptr; ++j) {
+      Outline& o = outlines[j];
+      if (point_in_ring(o.outer, loop.front()) || area(intersect(shape, o.shape)) > 1e-9) {
+        in = &o;
+      } else if (!find_ring_contacts({cleaned_ring(o.outer, 1e-9), cleaned_ring(loop, 1e-9)})
+                      .pairs.empty()) {
+        return bad_input(std::string(source) + ": a closed loop of the drawing (the " +
+                         std::to_string(k + 1) + ". largest) touches outline " +
+                         std::to_string(j + 1) +
+                         " from outside: draw the two as one outline, or as outlines apart");
+      }
+    }
+    if (in != nullptr) {
+      in->islands.push_back(std::move(loop));
+    } else {
+      outlines.push_back({loop, shape, {}});
+    }
+  }
+  if (outlines.size() == 1) {
+    return pocket_from_outline(std::move(outlines[0].outer), std::move(outlines[0].islands),
+                               source);
+  }
+  Pocket all;
+  all.source = std::string(source);
+  for (Outline& o : outlines) {
+    auto p = pocket_from_outline(std::move(o.outer), std::move(o.islands), source);
+    if (!p) return p.status();
+    all.region.rings.insert(all.region.rings.end(), p->region.rings.begin(), p->region.rings.end());
+    all.notes.insert(all.notes.end(), p->notes.begin(), p->notes.end());
+  }
+  all.notes.push_back(std::string(source) + ": " + std::to_string(outlines.size()) +
+                      " separate outlines (none inside another), each cleared on its own");
+  return all;
 }
 
 }  // namespace pocket

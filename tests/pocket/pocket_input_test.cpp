@@ -59,6 +59,38 @@ TEST(PocketInput, SvgPathWithRelativeArcsMakesACircleOfTheRightArea) {
   EXPECT_NEAR(region_area(*p), kPi * 400.0 - 100.0, kPi * 400.0 * 2e-4);
 }
 
+// A drawing of several pockets side by side: a loop outside every larger one starts an
+// outline of its own, the loops inside an outline are its islands; the region holds the
+// outlines as parts, largest first, and a note says how many. A loop touching another
+// outline from outside is neither, and is refused.
+TEST(PocketInput, SvgWithSeparateOutlinesIsOneRegionInParts) {
+  auto p = parse_pocket_svg(R"(<svg><rect x="2" y="2" width="30" height="20"/>
+    <circle cx="55" cy="15" r="10"/><circle cx="55" cy="15" r="3"/>
+    <rect x="75" y="5" width="20" height="30"/></svg>)",
+                            "three.svg", {.arc_tolerance_mm = 0.001});
+  ASSERT_TRUE(p.ok()) << p.status().to_string();
+  ASSERT_EQ(p->region.rings.size(), 4u);
+  EXPECT_EQ(p->island_count(), 1u);
+  EXPECT_NEAR(pocket::ring_area(p->region.rings[0]), 600.0, 1e-9);  // the largest first
+  EXPECT_NEAR(pocket::ring_area(p->region.rings[1]), 600.0, 1e-9);
+  EXPECT_NEAR(region_area(*p), 1200.0 + kPi * (100.0 - 9.0), kPi * 100.0 * 2e-4);
+  ASSERT_EQ(p->notes.size(), 1u);
+  EXPECT_NE(p->notes[0].find("3 separate outlines"), std::string::npos) << p->notes[0];
+  // The ring's island is still the circle's: a drawing of one outline is read as before.
+  auto one = parse_pocket_svg(
+      R"(<svg><circle cx="55" cy="15" r="10"/><circle cx="55" cy="15" r="3"/></svg>)", "o.svg");
+  ASSERT_TRUE(one.ok());
+  EXPECT_TRUE(one->notes.empty());
+  auto touching = parse_pocket_svg(
+      R"(<svg><rect x="0" y="0" width="30" height="20"/><rect x="30" y="5" width="10" height="10"/></svg>)",
+      "t.svg");
+  ASSERT_FALSE(touching.ok());
+  EXPECT_NE(touching.status().message().find("t.svg: a closed loop of the drawing (the 2. largest) "
+                                             "touches outline 1 from outside"),
+            std::string::npos)
+      << touching.status().message();
+}
+
 TEST(PocketInput, SvgHVAndRelativeLinesAndOpenPolylines) {
   auto p = parse_pocket_svg(R"(<svg><path d="m10 10 h30 v-20 l-30,0 Z"/></svg>)", "r.svg");
   ASSERT_TRUE(p.ok()) << p.status().to_string();

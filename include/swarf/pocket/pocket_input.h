@@ -57,7 +57,9 @@ struct CurveInputOptions {
 /// arc tolerance), with transforms (docs/pocket.md, "Pocket input").
 /// User units are mm unless a viewBox and an absolute width scale them; the y axis is
 /// flipped so that the drawing keeps its look.
-/// The loop with the largest area is the outer boundary, the others islands.
+/// The loop with the largest area is the outer boundary, the others islands; a loop outside
+/// every larger one (neither crossing nor touching it) is an outline of its own, a separate
+/// pocket in the same region (pocket_from_loops).
 Result<Pocket> parse_pocket_svg(std::string_view text, std::string_view source,
                                 const CurveInputOptions& options = {});
 
