@@ -92,6 +92,14 @@ TEST(AdaptiveResume, EveryChamberOfAPlateOfIslandsCloserThanTheToolIsCleared) {
   EXPECT_GE(s.metrics.lift_offs, 15U);  // a way into each chamber: they are apart
 }
 
+// Every pixel of the model's grid given up on.
+pocket::BitImage all_given_up(const pocket::Model& m) {
+  pocket::BitImage g(m.grid.width, m.grid.height);
+  for (int j = 0; j < g.height(); ++j)
+    g.set_span(j, 0, g.width() - 1);
+  return g;
+}
+
 // After a new entry, the material given up on is tried again only where the entry's chamber
 // (its component of free tool centres) can reach it: two rooms joined by a neck 8 mm wide,
 // which a ø10 does not pass.
@@ -119,29 +127,21 @@ TEST(AdaptiveResume, ANewEntryRetriesOnlyWhatItsChamberReaches) {
     const Vec2 q = m->grid.to_px(world);
     return g.get(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
   };
-  auto all_given_up = [&] {
-    pocket::BitImage g(m->grid.width, m->grid.height);
-    for (int j = 0; j < g.height(); ++j)
-      g.set_span(j, 0, g.width() - 1);
-    return g;
-  };
-  pocket::BitImage g = all_given_up();
+  pocket::BitImage g = all_given_up(*m);
   pocket::forget_given_up_near(*m, cc, {15, 15}, g);
   EXPECT_FALSE(given_up_at(g, {15, 15}));  // the entry's room
   EXPECT_FALSE(given_up_at(g, {2, 2}));    // its corner, a tool radius from any centre
   EXPECT_TRUE(given_up_at(g, {75, 15}));   // the other room: nothing there has changed
   EXPECT_TRUE(given_up_at(g, {88, 28}));
   // An entry off the free pixel centres (a tight centre) retries everything, as before.
-  pocket::BitImage off = all_given_up();
+  pocket::BitImage off = all_given_up(*m);
   pocket::forget_given_up_near(*m, cc, {45, 15}, off);
   EXPECT_EQ(off.count_all(), 0U);
   // One room: all of it.
   const Pocket one = make_pocket({{0, 0}, {30, 0}, {30, 30}, {0, 30}}, {}, "one room").value();
   auto m1 = pocket::make_model(one, testing::flat_mill(10.0), testing::params_3mm_deep(1.0));
   ASSERT_TRUE(m1.ok());
-  pocket::BitImage g1(m1->grid.width, m1->grid.height);
-  for (int j = 0; j < g1.height(); ++j)
-    g1.set_span(j, 0, g1.width() - 1);
+  pocket::BitImage g1 = all_given_up(*m1);
   pocket::forget_given_up_near(*m1, pocket::label_centre_components(*m1), {15, 15}, g1);
   EXPECT_EQ(g1.count_all(), 0U);
 }
