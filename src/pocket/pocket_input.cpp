@@ -192,7 +192,10 @@ Result<Pocket> pocket_from_loops(std::vector<Ring> loops, std::string_view sourc
     Outline* in = nullptr;
     for (std::size_t j = 0; j < outlines.size() && in == nullptr; ++j) {
       Outline& o = outlines[j];
-      if (point_in_ring(o.outer, loop.front()) || area(intersect(shape, o.shape)) > 1e-9) {
+      // A loop of fewer than 3 points, or one beside such an outline, goes with it: the
+      // checks of one outline name it (found by the fuzzer: an empty loop).
+      if (loop.size() < 3 || o.outer.size() < 3 || point_in_ring(o.outer, loop.front()) ||
+          area(intersect(shape, o.shape)) > 1e-9) {
         in = &o;
       } else if (!find_ring_contacts({cleaned_ring(o.outer, 1e-9), cleaned_ring(loop, 1e-9)})
                       .pairs.empty()) {

@@ -89,6 +89,14 @@ TEST(PocketInput, SvgWithSeparateOutlinesIsOneRegionInParts) {
                                              "touches outline 1 from outside"),
             std::string::npos)
       << touching.status().message();
+  // A loop with no points among separate outlines is named, not read past (the fuzzer's
+  // input crashed the classification of session 53's first version).
+  auto empty = parse_pocket_svg(R"(<svg><rect x="0" y="0" width="10" height="10"/>
+    <polygon points=""/><rect x="20" y="0" width="10" height="10"/></svg>)",
+                                "e.svg");
+  ASSERT_FALSE(empty.ok());
+  EXPECT_NE(empty.status().message().find("fewer than 3 distinct points"), std::string::npos)
+      << empty.status().message();
 }
 
 TEST(PocketInput, SvgHVAndRelativeLinesAndOpenPolylines) {
