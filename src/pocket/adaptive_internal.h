@@ -64,6 +64,7 @@ struct Model {
   BitImage forbidden;  ///< pixel centres the tool disk may not cover
   BitImage material;   ///< initial material: pocket pixels some free tool position covers
   std::vector<float> clearance_sq;  ///< squared distance to the nearest forbidden pixel, px^2
+  BitImage free_centres;  ///< pixel centres the tool may stand on: clearance over its radius
   /// Exact tool positions clear of the walls (wall stock included) in patches too narrow to
   /// hold a free pixel centre; their disks are material, and straight plunges may go there.
   std::vector<Vec2> tight_centres;
@@ -146,9 +147,8 @@ constexpr double kWallCrumbMm = 0.25;
 bool find_resume(const Model& model, const PixelStock& stock, Vec2 from, Vec2& at, Vec2& dir,
                  int& pi, int& pj, BitImage& given_up, double window_mm = 0.0);
 
-/// The free tool centres (pixel centres clear of the forbidden pixels by the tool radius) by
-/// connected component (8 neighbours): a label per pixel, -1 where not free, and the pixels
-/// of each component.
+/// The free tool centres (Model::free_centres) by connected component (8 neighbours): a label per
+/// pixel, -1 where not free, and the pixels of each component.
 struct CentreComponents {
   std::vector<int> label;
   std::vector<std::size_t> size;

@@ -268,13 +268,13 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   // count as engagement nor keep the tool searching near them.
   {
     const double r_px = r / m.h;
-    BitImage free_centres(m.grid.width, m.grid.height);
+    m.free_centres = BitImage(m.grid.width, m.grid.height);
     for (int j = 0; j < m.grid.height; ++j)
       for (int i = 0; i < m.grid.width; ++i)
         if (std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) > r_px)
-          free_centres.set(i, j, true);
-    BitImage reach = dilate_by_disk(free_centres, r_px);
-    m.tight_centres = tight_centres(m, free_centres, reach);
+          m.free_centres.set(i, j, true);
+    BitImage reach = dilate_by_disk(m.free_centres, r_px);
+    m.tight_centres = tight_centres(m, m.free_centres, reach);
     for (Vec2 c : m.tight_centres)
       add_disk(m.grid, c, r, reach);
     m.material = BitImage(m.grid.width, m.grid.height);

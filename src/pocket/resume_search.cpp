@@ -201,13 +201,15 @@ void trace_front_upstream(const Model& m, const PixelStock& stock, Vec2& at, Vec
 
 CentreComponents label_centre_components(const Model& m) {
   const int w = m.grid.width, h = m.grid.height;
-  const double r_px = m.radius_mm / m.h;
-  const auto r_sq = static_cast<float>(r_px * r_px);
+  const auto is_free = [&](std::size_t q) {
+    return m.free_centres.get(static_cast<int>(q % static_cast<std::size_t>(w)),
+                              static_cast<int>(q / static_cast<std::size_t>(w)));
+  };
   CentreComponents cc;
-  cc.label.assign(m.clearance_sq.size(), -1);
+  cc.label.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), -1);
   std::vector<std::size_t> todo;
   for (std::size_t seed = 0; seed < cc.label.size(); ++seed) {
-    if (cc.label[seed] >= 0 || m.clearance_sq[seed] < r_sq) continue;
+    if (cc.label[seed] >= 0 || !is_free(seed)) continue;
     const int id = static_cast<int>(cc.size.size());
     std::size_t n = 0;
     cc.label[seed] = id;
@@ -223,7 +225,7 @@ CentreComponents label_centre_components(const Model& m) {
           const int ii = i + di, jj = j + dj;
           if (ii < 0 || jj < 0 || ii >= w || jj >= h) continue;
           const std::size_t nq = m.grid.index(ii, jj);
-          if (cc.label[nq] >= 0 || m.clearance_sq[nq] < r_sq) continue;
+          if (cc.label[nq] >= 0 || !m.free_centres.get(ii, jj)) continue;
           cc.label[nq] = id;
           todo.push_back(nq);
         }
