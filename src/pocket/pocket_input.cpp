@@ -148,10 +148,9 @@ namespace {
 // the others islands.
 Result<Pocket> pocket_from_outline(Ring outer_loop, std::vector<Ring> islands,
                                    std::string_view source) {
-  const Ring outer = outer_loop;
-  auto p = make_pocket(std::move(outer_loop), islands, source);
+  auto p = make_pocket(outer_loop, islands, source);
   if (!p.ok() || p->notes.empty()) return p;
-  const PolygonSet outline = normalized(PolygonSet{{outer}});
+  const PolygonSet outline = normalized(PolygonSet{{outer_loop}});
   // A drawing's loops have no roles but their sizes. A loop inside the outline, touching it
   // or another loop, is a boss; one that crosses the outline, partly outside it, may as well
   // be part of the pocket drawn as a second shape as a boss on the wall: refused rather than

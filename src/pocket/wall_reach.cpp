@@ -242,6 +242,9 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
     const double d = dist[k];
     if (d < 1e-9 || d >= on + look) continue;
     const bool banded = d < on + channel && (d < on + riding || last_pass(k));
+    // Onto the offset all the way (riding, or a last pass within its band); a sliver pass
+    // goes its weight's share of the way.
+    const bool full = banded && d < on + last;
     if (!banded && weight[k] <= 0.0) continue;
     Vec2& p = lp.pts[k];
     const Vec2 s = foot[k] + (p - foot[k]) * (on / d);
@@ -261,10 +264,10 @@ void snap_to_wall_offset(const Model& m, LinkedPath& lp) {
       if (m.walls.inside(mid) && m.walls.distance(mid) > d && distance(mid, p) < 2.0 * channel)
         p = mid;
       if (m.walls.distance(p) < reach - 1e-9) push_out(k);
-    } else if (!(banded && d < on + last) && weight[k] <= 0.0) {
+    } else if (!full && weight[k] <= 0.0) {
       continue;  // past the last-pass band: only the channel rule moves it
     } else if (m.walls.distance(s) >= on - 1e-9 && m.walls.inside(s)) {
-      p = banded && d < on + last ? s : p + (s - p) * weight[k];
+      p = full ? s : p + (s - p) * weight[k];
     } else if (d < reach - 1e-9) {
       push_out(k);
     }
