@@ -4,8 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
-
 #include <vector>
 
 #include "pocket/pixel_stock.h"
@@ -102,11 +102,21 @@ Result<std::vector<Entry>> find_entries(const Model& model, int count);
 /// The medial-axis pixels (indices into the grid) at least min_clearance_px from every
 /// forbidden pixel, widest first.
 std::vector<int> entry_axis(const Model& model, double min_clearance_px);
+/// The medial axis new entries are sought on (entry_axis), with the helix or ramp that fits
+/// at each pixel worked out when first needed: it depends on the model alone, and a
+/// pocket of many chambers asks for it at every new entry.
+struct EntryAxis {
+  std::vector<int> pixels;
+  /// Per pixel: -1 not worked out yet, 0 no helix or ramp fits, 1 `entry` holds it.
+  std::vector<std::int8_t> fits;
+  std::vector<Entry> entry;
+};
+EntryAxis make_entry_axis(const Model& model, double min_clearance_px);
 /// An entry for material the cleared area cannot lead to: a plunge where the disk holds the
 /// most of `stock`'s material (at least min_px) over a cleared inner half, else the
 /// medial-axis pixel whose helix or ramp takes the most. False when there is none.
-bool find_entry_for_material(const Model& model, const PixelStock& stock,
-                             const std::vector<int>& axis, int min_px, Entry& entry);
+bool find_entry_for_material(const Model& model, const PixelStock& stock, EntryAxis& axis,
+                             int min_px, Entry& entry);
 /// Clears the entry hole or slot in the stock.
 void cut_entry(PixelStock& stock, const Model& model, const Entry& entry,
                CutVisitor visit = nullptr, void* user = nullptr);
@@ -129,6 +139,15 @@ struct RawPath {
 /// Entries made on the way (find_entry_for_material) are appended to `entries`.
 Result<RawPath> generate_raw_path(const Model& model, PixelStock& stock,
                                   std::vector<Entry>& entries, const Context& ctx);
+
+/// std::lround for |x| < 2^31 (halves away from zero), inline: the libm call cost 1 % of a
+/// pocket's run in the slot test, and about 5 % of a plate of chambers' in the resume
+/// search. x minus its truncation is exact.
+inline int round_half_away(double x) {
+  const int t = static_cast<int>(x);
+  const double f = x - t;
+  return t + (f >= 0.5 ? 1 : 0) - (f <= -0.5 ? 1 : 0);
+}
 
 /// Crumbs this close to the walls (beyond the wall stock) are not put back: the stated
 /// residual tolerance leaves them, and chasing them cost the benchmark L three lifts.

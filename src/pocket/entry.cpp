@@ -424,6 +424,14 @@ std::vector<int> entry_axis(const Model& m, double min_clearance_px) {
   return axis;
 }
 
+EntryAxis make_entry_axis(const Model& m, double min_clearance_px) {
+  EntryAxis a;
+  a.pixels = entry_axis(m, min_clearance_px);
+  a.fits.assign(a.pixels.size(), -1);
+  a.entry.resize(a.pixels.size());
+  return a;
+}
+
 Result<std::vector<Entry>> find_entries(const Model& m, int count) {
   const double r = m.radius_mm;
   const std::vector<int> order = entry_axis(m, m.radius_mm / m.h + 1.0);
@@ -483,8 +491,8 @@ void aim_at_material(const Model& m, const PixelStock& stock, Entry& e) {
 
 }  // namespace
 
-bool find_entry_for_material(const Model& m, const PixelStock& stock, const std::vector<int>& axis,
-                             int min_px, Entry& e) {
+bool find_entry_for_material(const Model& m, const PixelStock& stock, EntryAxis& axis, int min_px,
+                             Entry& e) {
   const double r = m.radius_mm;
   // A plunge first: where the inner half of the disk is already cleared, going straight
   // down only loads the end teeth near the rim, and costs a retract and a plunge instead
@@ -492,7 +500,7 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
   // corner next to cleared floor).
   int best_px = min_px - 1;
   bool found = false;
-  for (int idx : axis) {
+  for (int idx : axis.pixels) {
     const Vec2 c = axis_point(m, idx);
     if (stock.material_in_disk(c, 0.5 * r, 0) > 0) continue;
     const int px = stock.material_in_disk(c, r);
@@ -507,12 +515,16 @@ bool find_entry_for_material(const Model& m, const PixelStock& stock, const std:
     return true;
   }
   best_px = min_px - 1;
-  for (int idx : axis) {
+  for (std::size_t k = 0; k < axis.pixels.size(); ++k) {
+    const int idx = axis.pixels[k];
     const Vec2 c = axis_point(m, idx);
     // A ramp reaches at most 4 R either way.
     if (stock.material_in_disk(c, 5.0 * r, 0) == 0) continue;
-    Entry cand;
-    if (!entry_at(m, idx, cand)) continue;
+    // Worked out once per pixel (a third of the run on a plate of 132 chambers, each new
+    // entry trying the ramps of every pixel near material).
+    if (axis.fits[k] < 0) axis.fits[k] = entry_at(m, idx, axis.entry[k]) ? 1 : 0;
+    if (axis.fits[k] == 0) continue;
+    const Entry& cand = axis.entry[k];
     // What the entry takes: the helix's hole, or the most of the disks at the ramp's ends
     // and middle (a ramp runs along a wedge into its tip, where the material is).
     const int px =

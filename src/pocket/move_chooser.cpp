@@ -17,14 +17,6 @@ namespace swarf::pocket {
 
 namespace {
 
-// std::lround for |x| < 2^31 (halves away from zero), inline: the libm call cost 1 % of a
-// pocket's run in the slot test. x minus its truncation is exact.
-int round_half_away(double x) {
-  const int t = static_cast<int>(x);
-  const double f = x - t;
-  return t + (f >= 0.5 ? 1 : 0) - (f <= -0.5 ? 1 : 0);
-}
-
 struct Candidate {
   Vec2 p;
   int eng = PixelStock::kGouge;
@@ -312,7 +304,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
   BitImage given_up(m.grid.width, m.grid.height);
   CentreComponents components;  // labelled when a new entry first needs them
   auto give_up = [&](int i, int j) { given_up.set(i, j, true); };
-  std::vector<int> axis;  // medial axis, computed when first needed
+  EntryAxis axis;  // medial axis, computed when first needed
   // A new entry must take at least one straight step's worth of material to be worth its
   // retract and its plunge, helix or ramp.
   const int entry_min_px = std::max(1, static_cast<int>(std::ceil(m.target_px)));
@@ -661,7 +653,7 @@ Result<RawPath> generate_raw_path(const Model& m, PixelStock& stock, std::vector
         // a few pixels in corners); the medial axis and its walks then cost 7 % of the
         // benchmark L's time for nothing.
         if (stock.material().count_all() < static_cast<std::size_t>(entry_min_px)) break;
-        if (axis.empty()) axis = entry_axis(m, m.radius_mm / m.h + 0.75);
+        if (axis.pixels.empty()) axis = make_entry_axis(m, m.radius_mm / m.h + 0.75);
         Entry e;
         if (!find_entry_for_material(m, stock, axis, entry_min_px, e)) break;
         // Only the given-up material this entry's cuts can reach is tried again. All of it

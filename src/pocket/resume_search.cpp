@@ -31,6 +31,12 @@ constexpr double kCrumbsLeftMm2 = 0.25;
 // Whether the tool may stand at c over cleared floor: no gouge, and no material within half
 // a pixel beyond its disk (a resume point, and the front's standoff when a pass backs up it).
 bool clear_centre(const Model& m, const PixelStock& stock, Vec2 c) {
+  // Material at the pixel nearest c (within the disk) answers first: most points a resume
+  // search tries in untouched material fail there, at the cost of one bit.
+  const Vec2 q = m.grid.to_px(c);
+  const int i = round_half_away(q.x), j = round_half_away(q.y);
+  if (i >= 0 && j >= 0 && i < m.grid.width && j < m.grid.height && stock.material().get(i, j))
+    return false;
   return !stock.gouges(c) && stock.material_in_disk(c, m.radius_mm + 0.5 * m.h, 0) == 0;
 }
 
@@ -61,10 +67,26 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
   // that way).
   const int rounds = window_mm > 0.0 ? 16 : 1 << 30;
   std::vector<Px> px;
+  auto nearer = [](const Px& a, const Px& b) {
+    return a.d2 != b.d2 ? a.d2 < b.d2 : (a.j != b.j ? a.j < b.j : a.i < b.i);
+  };
+  // Without a window: the material pixels not given up, gathered from a square round `from`
+  // and sorted nearest first (up to `sorted`), are kept from round to round; `next` is the
+  // first not tried yet, and those up to `sure` are nearer than any pixel outside the
+  // square. A round gathers anew (a square twice as wide) only when its pixels run past
+  // `sure`. Each round gathered its square afresh: before the entry into an untouched
+  // pocket of a drawing of many, the search tried all its pixels, 4096 a round, and
+  // gathering took 82 % of the run (18 round pockets: 13.5 s). The pixels tried, and their
+  // order, are the same.
+  std::size_t next = 0, sure = 0, sorted = 0;
+  double square_px = 16.0;
+  // Material not given up, less each round by what it tried (the material does not change
+  // during the search).
+  std::size_t total = window_mm > 0.0 ? 0 : mat.count_all_except(given_up);
   for (int round = 0; round < rounds; ++round) {
-    px.clear();
     std::size_t tries = 0;
     if (window_mm > 0.0) {
+      px.clear();
       // In a window, every third pixel each way is plenty to find the nearest material.
       // Word-wise: the columns wi0, wi0 + 3, ... of a word starting at column 64 w are its
       // bits b with b = wi0 - 64 w (mod 3), one of three fixed patterns.
@@ -86,42 +108,62 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       if (static_cast<double>(px.size()) * m.h * m.h < 0.25 * m.stepover_mm * m.step_mm)
         return false;
       tries = std::min<std::size_t>(px.size(), 12);
+      std::partial_sort(px.begin(), px.begin() + static_cast<std::ptrdiff_t>(tries), px.end(),
+                        nearer);
     } else {
       // The nearest `tries` of all material pixels not given up, gathered from a square
       // round `from` that doubles until it holds that many within its inscribed circle
       // (every pixel outside the square is farther): the same pixels as sorting them all,
       // which gathered the whole stock (up to a million pixels) at every session's end.
-      const std::size_t total = mat.count_all_except(given_up);
       if (static_cast<double>(total) * m.h * m.h <
           std::min(0.25 * m.stepover_mm * m.step_mm, kCrumbsLeftMm2))
         return false;
       tries = std::min<std::size_t>(total, std::size_t{64} << std::min(round, 6));
       const Vec2 c = m.grid.to_px(from);
-      for (double w = 32.0;; w *= 2.0) {
+      while (sure - next < tries) {
+        square_px *= 2.0;
+        const double w = square_px;
         const int i0 = std::max(0, static_cast<int>(std::floor(c.x - w)));
         const int i1 = std::min(mat.width() - 1, static_cast<int>(std::ceil(c.x + w)));
         const int j0 = std::max(0, static_cast<int>(std::floor(c.y - w)));
         const int j1 = std::min(mat.height() - 1, static_cast<int>(std::ceil(c.y + w)));
         const bool all = i0 == 0 && j0 == 0 && i1 == mat.width() - 1 && j1 == mat.height() - 1;
         const double inside2 = (w * m.h) * (w * m.h) * (1.0 - 1e-9);
-        std::size_t inside = 0;
         px.clear();
+        next = 0;
         for (int j = j0; j <= j1 && i0 <= i1; ++j) {
           if (mat.count(j, i0, i1) == 0) continue;
           mat.for_each_set(j, i0, i1, [&](int i) {
             if (given_up.get(i, j)) return;
-            const double d2 = norm_sq(m.grid.to_world(i, j) - from);
-            px.push_back({d2, i, j});
-            inside += d2 <= inside2 ? 1 : 0;
+            px.push_back({norm_sq(m.grid.to_world(i, j) - from), i, j});
           });
         }
-        if (all || inside >= tries) break;
+        // Those within the inscribed circle first (all of them once the square holds the
+        // whole stock); they are sorted as the rounds need them.
+        const auto inside_end = all ? px.end()
+                                    : std::partition(px.begin(), px.end(),
+                                                     [&](const Px& q) { return q.d2 <= inside2; });
+        sure = static_cast<std::size_t>(inside_end - px.begin());
+        sorted = 0;
+        if (all) break;
+      }
+      tries = std::min(tries, sure - next);
+      // The first round on a gather sorts only its own pixels (it mostly finds a resume);
+      // a second sorts the rest at once (sorting each round's pixels out of the rest went
+      // over the rest again every round).
+      if (sorted < next + tries) {
+        const auto from_sorted = px.begin() + static_cast<std::ptrdiff_t>(sorted);
+        const auto inside_end = px.begin() + static_cast<std::ptrdiff_t>(sure);
+        if (sorted == 0) {
+          sorted = next + tries;
+          std::partial_sort(from_sorted, px.begin() + static_cast<std::ptrdiff_t>(sorted),
+                            inside_end, nearer);
+        } else {
+          std::sort(from_sorted, inside_end, nearer);
+          sorted = sure;
+        }
       }
     }
-    std::partial_sort(px.begin(), px.begin() + static_cast<std::ptrdiff_t>(tries), px.end(),
-                      [](const Px& a, const Px& b) {
-                        return a.d2 != b.d2 ? a.d2 < b.d2 : (a.j != b.j ? a.j < b.j : a.i < b.i);
-                      });
     // A resume point is half a step out of reach of the pixel. Near the last cut (a
     // window), where that point is held back only by crumbs at the walls, a step and a step
     // and a half out along the same direction are tried too, once no pixel has the first:
@@ -148,9 +190,10 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
       });
       return crumbs;
     };
+    const std::size_t first = window_mm > 0.0 ? 0 : next;
     for (int ring_k = 0; ring_k < rings; ++ring_k) {
       const double ring = m.radius_mm + 0.5 * (1 + ring_k) * m.step_mm;
-      for (std::size_t k = 0; k < tries; ++k) {
+      for (std::size_t k = first; k < first + tries; ++k) {
         const Vec2 q = m.grid.to_world(px[k].i, px[k].j);
         for (int a = 0; a < 360; a += (window_mm > 0.0 ? 30 : 15)) {
           const Vec2 u = kRingDirs[static_cast<std::size_t>(a / 15)];
@@ -168,8 +211,10 @@ bool find_resume(const Model& m, const PixelStock& stock, Vec2 from, Vec2& at, V
         }
       }
     }
-    for (std::size_t k = 0; k < tries; ++k)
+    for (std::size_t k = first; k < first + tries; ++k)
       given_up.set(px[k].i, px[k].j, true);
+    next += tries;
+    total -= std::min(total, tries);
   }
   return false;
 }
