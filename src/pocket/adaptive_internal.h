@@ -171,9 +171,22 @@ bool find_resume(const Model& model, const PixelStock& stock, Vec2 from, Vec2& a
 struct CentreComponents {
   std::vector<int> label;
   std::vector<std::size_t> size;
+  /// Per component, the pixel box holding it: columns i0..i1, rows j0..j1.
+  struct Box {
+    int i0, j0, i1, j1;
+  };
+  std::vector<Box> box;
   std::size_t free = 0;  ///< free pixels in all
 };
 CentreComponents label_centre_components(const Model& model);
+
+/// Blocks of 2^kReachBlockShift pixels a side, for cleared_reach.
+constexpr int kReachBlockShift = 3;
+/// Per block of pixels (pixel (i, j) in block (i >> kReachBlockShift, j >> kReachBlockShift)):
+/// whether a tool position with no material in its disk, the resume search's test, may lie
+/// within `ring_mm` of a pixel of it. A pixel whose block is unset has no resume at that
+/// ring; a set block may (our addition, resume_search.cpp).
+BitImage cleared_reach(const Model& model, const PixelStock& stock, double ring_mm);
 
 /// After a new entry at `centre`: clears `given_up` where the tool, working from the entry's
 /// component of free centres, may change what a resume finds (material within 3 R and a step

@@ -146,5 +146,69 @@ TEST(AdaptiveResume, ANewEntryRetriesOnlyWhatItsChamberReaches) {
   EXPECT_EQ(g1.count_all(), 0U);
 }
 
+// The block map that lets the resume search skip material far from any cleared floor,
+// against a brute-force search: two rooms joined by a neck a ø10 does not pass, the first
+// partly cut, the second untouched. Every material pixel for which some point on the ring
+// (every 15 degrees, as the search tries) is a resume (no gouge, no material in its disk)
+// lies in a set block, and the untouched room, even its corners and the pixels just inside
+// its walls, does not.
+TEST(AdaptiveResume, TheResumeSearchSkipsOnlyMaterialNoResumeReaches) {
+  const Pocket two = make_pocket({{0, 0},
+                                  {30, 0},
+                                  {30, 11},
+                                  {60, 11},
+                                  {60, 0},
+                                  {90, 0},
+                                  {90, 30},
+                                  {60, 30},
+                                  {60, 19},
+                                  {30, 19},
+                                  {30, 30},
+                                  {0, 30}},
+                                 {}, "two rooms")
+                         .value();
+  for (const double wall_stock : {0.0, 0.5}) {
+    AdaptiveParams ap = testing::params_3mm_deep(1.0);
+    ap.wall_stock_mm = wall_stock;
+    auto m = pocket::make_model(two, testing::flat_mill(10.0), ap);
+    ASSERT_TRUE(m.ok()) << m.status().to_string();
+    pocket::PixelStock stock = pocket::fresh_stock(*m);
+    // The first room cleared but for a band 3 mm wide along its walls (tool centres over
+    // [8, 22] x [9, 21] every 0.25 mm), then a ragged bite into the band by one move.
+    for (int a = 0; a <= 56; ++a) {
+      for (int b = 0; b <= 48; ++b)
+        stock.stamp({8 + 0.25 * a, 9 + 0.25 * b});
+    }
+    stock.cut({22, 21}, {23.5, 23.2});
+    const double ring = m->radius_mm + 0.5 * m->step_mm;
+    const pocket::BitImage reach = pocket::cleared_reach(*m, stock, ring);
+    auto in_reach = [&](int i, int j) {
+      return reach.get(i >> pocket::kReachBlockShift, j >> pocket::kReachBlockShift);
+    };
+    const pocket::BitImage& mat = stock.material();
+    std::size_t resumable = 0, wrong = 0;
+    for (int j = 0; j < mat.height(); ++j) {
+      for (int i = 0; i < mat.width(); ++i) {
+        if (!mat.get(i, j)) continue;
+        const Vec2 q = m->grid.to_world(i, j);
+        bool any = false;
+        for (int a = 0; a < 360 && !any; a += 15) {
+          const Vec2 c = q + Vec2{std::cos(deg_to_rad(a)), std::sin(deg_to_rad(a))} * ring;
+          any = !stock.gouges(c) && stock.material_in_disk(c, m->radius_mm + 0.5 * m->h, 0) == 0;
+        }
+        resumable += any ? 1 : 0;
+        wrong += any && !in_reach(i, j) ? 1 : 0;
+      }
+    }
+    EXPECT_GT(resumable, 1000U) << wall_stock;  // the test has resumes to find
+    EXPECT_EQ(wrong, 0U) << wall_stock;
+    for (const Vec2 far : {Vec2{75, 15}, Vec2{63, 3}, Vec2{87, 27}, Vec2{61, 29}}) {
+      const Vec2 px = m->grid.to_px(far);
+      EXPECT_FALSE(in_reach(static_cast<int>(px.x), static_cast<int>(px.y)))
+          << far.x << ", " << far.y << " wall stock " << wall_stock;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace swarf
