@@ -434,6 +434,15 @@ TEST(AdaptivePocket, RandomPocketWhoseCentresEndInANearlyTangentSliver) {
   EXPECT_LE(o.sweep.residual_mm2, 0.5);
 }
 
+// Pocket 6032 of bench/pocket_random.sh (ø12 at 15 %, a rectangle with an island across
+// its top-right corner): a straight link's point lay within 4e-12 mm of the full lift off
+// the wall, and the loop that tries the whole lift, half and a quarter, stopping by the
+// lift left against a quarter of the whole, never stopped (the CLI hung).
+TEST(AdaptivePocket, RandomPocketWithALinkPointAtTheFullLiftOffTheWall) {
+  const Outcome o = expect_random_pocket_correct("random_seed6032.json", 12.0, 1.8);
+  EXPECT_LE(o.sweep.residual_mm2, 0.5);
+}
+
 // Pocket 65 of bench/pocket_random.sh: an L with three islands, ø16 at 5 %. Resumed
 // sessions that cut nothing gave up one pixel each and used up the session limit on one
 // spot, leaving 1640 mm^2; they give up a tool disk now. Gouge and residual only (0.2 mm
