@@ -65,6 +65,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.straight_plunge = p.at("straight_plunge").get<bool>();
   ap.one_way = p.at("one_way").get<bool>();
   ap.smooth_links = p.at("smooth_links").get<bool>();
+  ap.smooth_corners = p.at("smooth_corners").get<bool>();
   ap.smoothing_iterations = p.at("smoothing").get<int>();
   ap.simplify_tolerance_mm = num(p, "simplify_tolerance");
   ap.wall_scallop_mm = num(p, "wall_scallop");
@@ -184,6 +185,11 @@ const OperationRegistrar kRegistrar(Operation{
             Param{"smooth_links", ParamType::kBool, false,
                   "fly links that would turn back on a pass as loops over the cleared floor "
                   "(fewer reversals, a little more path)",
+                  false},
+            Param{"smooth_corners", ParamType::kBool, true,
+                  "round a cutting pass's turns of a few degrees or more between two moves "
+                  "by a curve through the same points (the contact arc then no longer jumps "
+                  "by the turn at each move's end)",
                   false},
             number_param("link_feed", 0.0,
                          "feed of keep-tool-down links over cleared floor, mm/min (0 = 5000, "

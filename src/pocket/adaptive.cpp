@@ -680,6 +680,8 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
                   {tp.moves.back().end.x, tp.moves.back().end.y, params.clearance_z_mm}, 0, false));
   }
   res.retracts_per_layer = retracts / layers;
+  if (params.smooth_corners)
+    pocket::smooth_cutting_corners(m, tp, std::clamp(0.15 * m.target_deg, 2.0, 6.0));
   return res;
 }
 

@@ -180,6 +180,14 @@ struct CentreComponents {
 };
 CentreComponents label_centre_components(const Model& model);
 
+/// Replaces the straight cutting moves either side of each turn of more than `max_turn_deg`
+/// by pieces of a centripetal Catmull-Rom curve through the same points, each piece turning
+/// about `max_turn_deg` at most (8 pieces a move at most). Moves next to a corner (a turn
+/// over 60 degrees), moves with an end within two pixels of the walls' offset, and moves
+/// whose pieces would come within a pixel of it (exact geometry) stay straight. Every point
+/// of the path stays where it was (corner_smoothing.cpp).
+void smooth_cutting_corners(const Model& model, Toolpath& tp, double max_turn_deg);
+
 /// Blocks of 2^kReachBlockShift pixels a side, for cleared_reach.
 constexpr int kReachBlockShift = 3;
 /// Per block of pixels (pixel (i, j) in block (i >> kReachBlockShift, j >> kReachBlockShift)):

@@ -53,6 +53,11 @@ struct AdaptiveParams {
   /// Dubins path of arcs and straights that keeps off the walls and cuts nothing. Fewer
   /// reversals (the machine stops less), at some path length (docs/pocket.md).
   bool smooth_links = false;
+  /// Where a cutting pass turns by more than a few degrees between two output moves (up to
+  /// 60), its moves there become pieces of a curve through the same points, each turning at
+  /// most 15 % of the target engagement (2-6 degrees): the contact arc no longer jumps by
+  /// the whole turn at every step's end. More, shorter moves; no point of the path moves.
+  bool smooth_corners = true;
 
   double depth_mm = 6.0;        ///< pocket depth below top_z_mm
   double stepdown_mm = 0.0;     ///< depth of cut per layer; 0 = the whole depth at once
