@@ -100,24 +100,29 @@ pocket::BitImage all_given_up(const pocket::Model& m) {
   return g;
 }
 
+// Two rooms 30 x 30 joined by a neck 8 mm wide and 30 long, which a ø10 does not pass.
+Pocket two_rooms() {
+  return make_pocket({{0, 0},
+                      {30, 0},
+                      {30, 11},
+                      {60, 11},
+                      {60, 0},
+                      {90, 0},
+                      {90, 30},
+                      {60, 30},
+                      {60, 19},
+                      {30, 19},
+                      {30, 30},
+                      {0, 30}},
+                     {}, "two rooms")
+      .value();
+}
+
 // After a new entry, the material given up on is tried again only where the entry's chamber
 // (its component of free tool centres) can reach it: two rooms joined by a neck 8 mm wide,
 // which a ø10 does not pass.
 TEST(AdaptiveResume, ANewEntryRetriesOnlyWhatItsChamberReaches) {
-  const Pocket two = make_pocket({{0, 0},
-                                  {30, 0},
-                                  {30, 11},
-                                  {60, 11},
-                                  {60, 0},
-                                  {90, 0},
-                                  {90, 30},
-                                  {60, 30},
-                                  {60, 19},
-                                  {30, 19},
-                                  {30, 30},
-                                  {0, 30}},
-                                 {}, "two rooms")
-                         .value();
+  const Pocket two = two_rooms();
   auto m = pocket::make_model(two, testing::flat_mill(10.0), testing::params_3mm_deep(1.0));
   ASSERT_TRUE(m.ok()) << m.status().to_string();
   const pocket::CentreComponents cc = pocket::label_centre_components(*m);
@@ -153,20 +158,7 @@ TEST(AdaptiveResume, ANewEntryRetriesOnlyWhatItsChamberReaches) {
 // lies in a set block, and the untouched room, even its corners and the pixels just inside
 // its walls, does not.
 TEST(AdaptiveResume, TheResumeSearchSkipsOnlyMaterialNoResumeReaches) {
-  const Pocket two = make_pocket({{0, 0},
-                                  {30, 0},
-                                  {30, 11},
-                                  {60, 11},
-                                  {60, 0},
-                                  {90, 0},
-                                  {90, 30},
-                                  {60, 30},
-                                  {60, 19},
-                                  {30, 19},
-                                  {30, 30},
-                                  {0, 30}},
-                                 {}, "two rooms")
-                         .value();
+  const Pocket two = two_rooms();
   for (const double wall_stock : {0.0, 0.5}) {
     AdaptiveParams ap = testing::params_3mm_deep(1.0);
     ap.wall_stock_mm = wall_stock;
