@@ -98,9 +98,10 @@ void smooth_cutting_corners(const Model& m, Toolpath& tp, double max_turn_deg) {
       // straight (they are a pass's end and the next one's start, or a step back).
       const bool corner = turn[k] > kCornerDeg || turn[k + 1] > kCornerDeg;
       const bool open_before = k > 0, open_after = k + 1 < n;
-      const double t_in = open_before ? turn[k] : 0.0, t_out = open_after ? turn[k + 1] : 0.0;
+      // (turn[0] and turn[n], the run's ends, are 0.)
       const int pieces = std::min(
-          kMostPieces, static_cast<int>(std::ceil(std::max(t_in, t_out) / max_turn_deg - 1e-9)));
+          kMostPieces,
+          static_cast<int>(std::ceil(std::max(turn[k], turn[k + 1]) / max_turn_deg - 1e-9)));
       if (pieces <= 1 || corner || on_wall[k] || on_wall[k + 1]) {
         out.push_back(mv);
         continue;

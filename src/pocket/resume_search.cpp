@@ -67,6 +67,7 @@ BitImage cleared_reach(const Model& m, const PixelStock& stock, double ring_mm) 
   }
   auto floor_word = [&](int j, int wd) {
     if (j < 0 || j >= h || wd < 0 || wd >= nw) return std::uint64_t{0};
+    // (The pocket's word keeps the bits past the image's last column clear.)
     return m.pocket.word(j, wd) & ~m.forbidden.word(j, wd) & ~mat.word(j, wd);
   };
   // The floor's bits of columns x0 .. x0 + 63 of row j.
