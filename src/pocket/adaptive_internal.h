@@ -292,7 +292,8 @@ struct KeptMove {
 /// A run of kept moves first..last (indices into `keep`, each move keep[q - 1] -> keep[q])
 /// that cut a full slot: a neck barely wider than the tool (neck_plunges.cpp). Runs are
 /// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
-/// walls within a millimetre of the tool on both sides (1 mm or longer).
+/// walls within a millimetre of the tool on both sides (1 mm or longer); pieces of such
+/// runs less than a tool radius of path apart, between close walls all the way, are one.
 /// The removal angles neck_runs judges by (neck_plunges.cpp says why): a full slot
 /// anywhere, and a heavy cut between close walls. The output simplification keeps moves
 /// apart where a step crosses either, so a move's average does not hide them.

@@ -33,6 +33,8 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // Shorter runs of full slot are single short moves whose removal per length reads high on
   // the pixels.
   constexpr double kMinRunMm = 0.2;
+  // Slot runs this close along the path, pinched between, are one neck (below).
+  const double bridge_mm = std::max(1.0, m.radius_mm);
   const double reach = m.radius_mm + m.wall_stock_mm + kTightMarginMm;
   auto walled = [&](Vec2 p, Vec2 n) {
     return !m.walls.inside(p + n * reach) && !m.walls.inside(p - n * reach);
@@ -51,28 +53,67 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
       in += walled(a + (b - a) * (static_cast<double>(k) / (samples - 1)), n) ? 1 : 0;
     return 2 * in >= samples;
   };
+  // Between walls within reach on two opposite sides, whichever way the line between them
+  // runs (every 22.5 degrees): in a channel, whatever the heading of the move there.
+  auto pinched = [&](Vec2 p) {
+    for (int k = 0; k < 8; ++k) {
+      const double a = kPi * k / 8.0;
+      if (walled(p, Vec2{std::cos(a), std::sin(a)})) return true;
+    }
+    return false;
+  };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
     return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && tight(q));
   };
-  std::vector<NeckRun> out;
+  struct Run {
+    NeckRun n;
+    bool full = false;  // a full slot by the model itself
+  };
+  std::vector<Run> runs;
   for (std::size_t q = 1; q < keep.size();) {
     if (!slot(q)) {
       ++q;
       continue;
     }
-    NeckRun n;
-    n.first = q;
-    bool full = false;  // a full slot by the model itself
+    Run r;
+    r.n.first = q;
     for (; q < keep.size() && slot(q); ++q) {
-      n.length_mm += kept[q].len;
-      full = full || kept[q].deg >= kNeckSlotDeg;
+      r.n.length_mm += kept[q].len;
+      r.full = r.full || kept[q].deg >= kNeckSlotDeg;
     }
-    n.last = q - 1;
-    // Tight runs shorter than a millimetre are mostly trochoidal loops in a channel, one
-    // move of each reading heavy (random pocket 998: five plunges for no slot by the sweep).
-    if (n.length_mm >= (full ? kMinRunMm : kTightRunMm)) out.push_back(n);
+    r.n.last = q - 1;
+    // A channel only a few tenths wider than the tool, where the chooser creeps: each
+    // session cuts a step or two, a link or a short move back lies between (random pocket
+    // 1516: a ø8 between a round island and the wall 8.1-8.25 mm apart over 5 mm, 1.7 mm
+    // of full slot by the sweep in pieces of 0.05-0.4 mm, too short to be plunged each).
+    // Runs less than a tool radius (or a millimetre) of path apart, with no retract between
+    // and walls on two opposite sides of every move between, are one neck: its way goes back
+    // and forth there, which the plunges and the cusps taken backwards follow.
+    if (!runs.empty()) {
+      const NeckRun& prev = runs.back().n;
+      double gap = 0.0;
+      bool bridged = true;
+      for (std::size_t g = prev.last + 1; g < r.n.first && bridged; ++g) {
+        gap += kept[g].len;
+        const Vec2 a = lp.pts[keep[g - 1]], b = lp.pts[keep[g]];
+        bridged = gap <= bridge_mm && !lp.jump[keep[g - 1]] && pinched(a) &&
+                  pinched((a + b) * 0.5) && pinched(b);
+      }
+      if (bridged && !lp.jump[keep[r.n.first - 1]]) {
+        runs.back().n.last = r.n.last;
+        runs.back().n.length_mm += r.n.length_mm;
+        runs.back().full = runs.back().full || r.full;
+        continue;
+      }
+    }
+    runs.push_back(r);
   }
+  std::vector<NeckRun> out;
+  // Tight runs shorter than a millimetre are mostly trochoidal loops in a channel, one
+  // move of each reading heavy (random pocket 998: five plunges for no slot by the sweep).
+  for (const Run& r : runs)
+    if (r.n.length_mm >= (r.full ? kMinRunMm : kTightRunMm)) out.push_back(r.n);
   return out;
 }
 

@@ -192,5 +192,76 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
   EXPECT_TRUE(one_move({40.0, axis}, {52.0, axis}, 130.0).empty());   // 2 mm of 12
 }
 
+// A creep through a channel a few tenths wider than the tool (random pocket 1516: a ø8
+// between a round island and the wall 8.1-8.25 mm apart): heavy cuts of a step or two, each
+// too short to count alone, with short moves back and links between. Pieces of slot less
+// than a tool radius apart along the path, pinched between the walls all the way between,
+// make one neck; not across a retract, not through a chamber, not farther apart.
+TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
+  const Pocket p = make_pocket({{0, 0},
+                                {50, 0},
+                                {50, 15},
+                                {70, 15},
+                                {70, 0},
+                                {120, 0},
+                                {120, 50},
+                                {70, 50},
+                                {70, 35.08},
+                                {50, 35.08},
+                                {50, 50},
+                                {0, 50}},
+                               {}, "dumbbell 20")
+                       .value();
+  auto m = pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+  ASSERT_TRUE(m.ok()) << m.status().to_string();
+  const double axis = 25.04;
+  // Two heavy cuts 0.6 mm each (a heavy run needs 1 mm), from x0 and from x0 + 0.6, with
+  // the path in between: `gap` points after the first.
+  struct Pt {
+    double x, y;
+    bool link, jump;
+  };
+  auto runs = [&](double x0, const std::vector<Pt>& gap) {
+    pocket::LinkedPath lp;
+    std::vector<std::size_t> keep;
+    std::vector<pocket::KeptMove> kept(1);
+    auto add = [&](Vec2 at, double deg, bool link, bool jump) {
+      if (!lp.pts.empty()) {
+        lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
+        lp.jump.push_back(jump);
+        lp.entry.push_back(-1);
+        pocket::KeptMove km;
+        km.len = distance(lp.pts.back(), at);
+        km.deg = deg;
+        km.link = link;
+        km.fast = link;
+        kept.push_back(km);
+      }
+      keep.push_back(lp.pts.size());
+      lp.pts.push_back(at);
+    };
+    add({x0, axis}, 0.0, false, false);
+    add({x0 + 0.6, axis}, 130.0, false, false);
+    for (const Pt& g : gap)
+      add({g.x, g.y}, 20.0, g.link, g.jump);
+    add({x0 + 1.2, axis}, 130.0, false, false);
+    return pocket::neck_runs(*m, lp, keep, kept);
+  };
+  // In the neck: back 0.3 mm, a link forward to where the first cut ended: one neck.
+  const auto creep = runs(55.0, {{55.3, axis, false, false}, {55.6, axis, true, false}});
+  ASSERT_EQ(creep.size(), 1u);
+  EXPECT_EQ(creep[0].first, 1u);
+  EXPECT_EQ(creep[0].last, 4u);
+  EXPECT_NEAR(creep[0].length_mm, 1.2, 1e-12);
+  // The same with a retract between (the cusps taken backwards would cross it at the floor).
+  EXPECT_TRUE(runs(55.0, {{55.3, axis, false, true}, {55.6, axis, true, false}}).empty());
+  // Between the pieces the path goes out of the neck's mouth into the chamber and back (8.8
+  // mm, within a radius).
+  EXPECT_TRUE(runs(51.0, {{47.0, axis, true, false}, {51.6, axis, true, false}}).empty());
+  EXPECT_EQ(runs(51.0, {{50.5, axis, true, false}, {51.6, axis, true, false}}).size(), 1u);
+  // In the neck, but 12 mm of path between the pieces (more than a radius).
+  EXPECT_TRUE(runs(55.0, {{61.6, axis, true, false}, {55.6, axis, true, false}}).empty());
+}
+
 }  // namespace
 }  // namespace swarf
