@@ -119,10 +119,9 @@ TEST(NeckPlunges, ANeckAsWideAsTheToolIsPlungedThroughNotSlotted) {
   EXPECT_EQ(plunges, plunged.result.neck_plunges);
 }
 
-// Which runs of output moves count as a neck's slot (pocket::neck_runs), on the model of a
-// ø20 in a dumbbell whose neck is 20.08 mm wide, as random pocket 1088's (the model's
-// removal reads 145-165 degrees there where the sweep sees a full slot).
-TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
+// The model of a ø20 in a dumbbell of two chambers whose neck is 20.08 mm wide (x 50-70,
+// y 15-35.08), as random pocket 1088's.
+Result<pocket::Model> dumbbell_20_model() {
   const Pocket p = make_pocket({{0, 0},
                                 {50, 0},
                                 {50, 15},
@@ -137,7 +136,14 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
                                 {0, 50}},
                                {}, "dumbbell 20")
                        .value();
-  auto m = pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+  return pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+}
+
+// Which runs of output moves count as a neck's slot (pocket::neck_runs), on the model of a
+// ø20 in a dumbbell whose neck is 20.08 mm wide, as random pocket 1088's (the model's
+// removal reads 145-165 degrees there where the sweep sees a full slot).
+TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
+  auto m = dumbbell_20_model();
   ASSERT_TRUE(m.ok()) << m.status().to_string();
   // `count` moves of 0.5 mm along y = y0 from x = x0, each removing `deg` by the model.
   auto runs = [&](double x0, double y0, int count, double deg) {
@@ -198,21 +204,7 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
 // than a tool radius apart along the path, pinched between the walls all the way between,
 // make one neck; not across a retract, not through a chamber, not farther apart.
 TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
-  const Pocket p = make_pocket({{0, 0},
-                                {50, 0},
-                                {50, 15},
-                                {70, 15},
-                                {70, 0},
-                                {120, 0},
-                                {120, 50},
-                                {70, 50},
-                                {70, 35.08},
-                                {50, 35.08},
-                                {50, 50},
-                                {0, 50}},
-                               {}, "dumbbell 20")
-                       .value();
-  auto m = pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+  auto m = dumbbell_20_model();
   ASSERT_TRUE(m.ok()) << m.status().to_string();
   const double axis = 25.04;
   // Two heavy cuts 0.6 mm each (a heavy run needs 1 mm), from x0 and from x0 + 0.6, with
