@@ -100,7 +100,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
         bridged = gap <= bridge_mm && !lp.jump[keep[g - 1]] && pinched(a) &&
                   pinched((a + b) * 0.5) && pinched(b);
       }
-      if (bridged && !lp.jump[keep[r.n.first - 1]]) {
+      if (bridged) {  // (a run never starts with a jump: slot() says no)
         runs.back().n.last = r.n.last;
         runs.back().n.length_mm += r.n.length_mm;
         runs.back().full = runs.back().full || r.full;
