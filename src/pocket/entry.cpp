@@ -226,7 +226,7 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.smooth_links = p.smooth_links;
   m.want_helix_mm = p.helix_radius_mm > 0.0 ? p.helix_radius_mm : 0.3 * 2.0 * r;
   m.straight_plunge = p.straight_plunge;
-  m.link_lift_mm = std::max(p.wall_scallop_mm > 0.0 ? p.wall_scallop_mm : 0.1, m.h);
+  m.link_lift_mm = std::max(2.0 * (p.wall_scallop_mm > 0.0 ? p.wall_scallop_mm : 0.1), m.h);
 
   m.grid = Grid::covering(box, m.h, margin_mm + 4.0 * m.h);
   if (static_cast<double>(m.grid.width) * m.grid.height > p.max_pixels)
