@@ -296,10 +296,11 @@ WallGrazes wall_grazes(const Pocket& p, double tool_d, double stepover_mm, doubl
   for (const auto& q : samples) {
     if (q.engagement_deg <= 2.0) continue;
     const Move& m = r->toolpath.moves[q.move];
-    if (m.feed_mm_min >= ap.rapid_mm_min)
+    if (m.feed_mm_min >= ap.rapid_mm_min) {
       g.link_feed_cut += q.length_mm;
-    else if (q.engagement_deg < 10.0)
+    } else if (q.engagement_deg < 10.0) {
       g.grazes += q.length_mm;
+    }
   }
   std::printf(
       "  of %.0f mm of cut: %.1f mm at the link feed, %.1f mm at 2-10 degrees; within "
