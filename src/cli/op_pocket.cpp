@@ -215,7 +215,7 @@ const OperationRegistrar kRegistrar(Operation{
             number_param("wall_scallop", 0.1,
                          "scallops higher than this (mm) where passes meet a wall at an angle "
                          "are taken off once the path is done, square to the wall (0 = leave "
-                         "them); links along a wall keep this far off it"),
+                         "them); links along a wall keep twice this off it"),
             Param{"arcs", ParamType::kBool, false, "fit G2/G3 arcs to the output", false},
         }),
     run});

@@ -95,8 +95,8 @@ struct AdaptiveParams {
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
   /// at an angle are taken off by short dabs square to it (or a ride along it); 0 = none.
-  /// Links over the cleared floor keep this far off the walls they run along (0.1 mm where
-  /// it is 0, at least a pixel), clear of the lower scallops left there.
+  /// Links over the cleared floor keep twice this off the walls they run along (0.2 mm
+  /// where it is 0, at least a pixel), clear of the lower scallops left there.
   double wall_scallop_mm = 0.1;
   /// Douglas-Peucker tolerance of the output, mm; 0 = a quarter of the pixel size.
   double simplify_tolerance_mm = 0.0;
