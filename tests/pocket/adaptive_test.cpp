@@ -413,6 +413,21 @@ TEST(AdaptivePocket, RandomPocketWithAShortNeckAsWideAsTheTool) {
   EXPECT_LE(o.sweep.slot_length_mm, 0.5);
 }
 
+// Pocket 1516 of bench/pocket_random.sh (ø8 at 30 %): the tool creeps through a neck
+// 0.12-0.18 mm wider than it between a round island and the wall, plunged through; past the
+// neck's last plunge it crept on, a link and three short moves, then 0.4 mm into the
+// neck's far end at 108 degrees by the model, under the 110 that marks a heavy cut between
+// close walls, and 179 by the sweep: 0.4 mm of full slot (1.7 mm before session 56). Heavy
+// moves that close after a neck now belong to it (neck_plunges.cpp). At this test's pixel
+// the sweep read 0.47 mm of slot before; 0.08 mm is left, the pass back through the neck
+// (along the way the cusps were just cut on) arriving at its last plunge's hole, whose wall
+// the sweep's ring meets within half a checker pixel: no material is removed there.
+TEST(AdaptivePocket, RandomPocketWhoseCreepGoesOnPastANecksLastPlunge) {
+  const Outcome o = expect_random_pocket_correct("random_seed1516.json", 8.0, 2.4);
+  EXPECT_LE(o.sweep.slot_length_mm, 0.1);
+  EXPECT_GT(o.result.neck_plunges, 0);
+}
+
 // Pocket 894 of bench/pocket_random.sh (ø20 at 30 %): below a round island, beside a
 // square one and above the wall, the tool fits in a patch of centres 0.2 x 0.3 mm with
 // 0.05 mm of room and no pixel centre in it. Only that patch reaches 49 mm^2 there, less

@@ -255,5 +255,61 @@ TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
   EXPECT_TRUE(runs(55.0, {{61.6, axis, true, false}, {55.6, axis, true, false}}).empty());
 }
 
+// A heavy move just past a neck's run (a short move back and a link between, in the neck)
+// belongs to it when it reads 100 degrees or more by the model, though under the 110 of a
+// heavy run: between walls this close the model misses the slivers beside the tool (random
+// pocket 1516: 108 degrees by the model, 179 by the sweep). Not after a run too short to be
+// a neck, not a lighter move, not past a retract.
+TEST(NeckPlunges, AHeavyMoveJustPastANeckBelongsToIt) {
+  auto m = dumbbell_20_model();
+  ASSERT_TRUE(m.ok()) << m.status().to_string();
+  const double axis = 25.04;
+  // `count` heavy cuts of 0.5 mm at 130 degrees from x = 55, 0.3 mm back, a link forward,
+  // then a move of 0.4 mm removing `deg`.
+  auto runs = [&](int count, double deg, bool retract) {
+    pocket::LinkedPath lp;
+    std::vector<std::size_t> keep;
+    std::vector<pocket::KeptMove> kept(1);
+    auto add = [&](double x, double d, bool link, bool jump) {
+      if (!lp.pts.empty()) {
+        lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
+        lp.jump.push_back(jump);
+        lp.entry.push_back(-1);
+        pocket::KeptMove km;
+        km.len = std::abs(x - lp.pts.back().x);
+        km.deg = d;
+        km.link = link;
+        km.fast = link;
+        kept.push_back(km);
+      }
+      keep.push_back(lp.pts.size());
+      lp.pts.push_back({x, axis});
+    };
+    add(55.0, 0.0, false, false);
+    for (int k = 1; k <= count; ++k)
+      add(55.0 + 0.5 * k, 130.0, false, false);
+    const double end = 55.0 + 0.5 * count;
+    add(end - 0.3, 20.0, false, retract);
+    add(end, 0.0, true, false);
+    add(end + 0.4, deg, false, false);
+    return pocket::neck_runs(*m, lp, keep, kept);
+  };
+  const auto past = runs(3, 108.0, false);
+  ASSERT_EQ(past.size(), 1u);
+  EXPECT_EQ(past[0].first, 1u);
+  EXPECT_EQ(past[0].last, 6u);
+  EXPECT_NEAR(past[0].length_mm, 1.5 + 0.3 + 0.3 + 0.4, 1e-12);
+  // A lighter move stays out of the neck, which ends where its heavy run does.
+  const auto lighter = runs(3, 95.0, false);
+  ASSERT_EQ(lighter.size(), 1u);
+  EXPECT_EQ(lighter[0].last, 3u);
+  // After a single heavy move (0.5 mm, short of the millimetre of a run), no neck at all.
+  EXPECT_TRUE(runs(1, 108.0, false).empty());
+  // Past a retract, the move is not the neck's.
+  const auto retracted = runs(3, 108.0, true);
+  ASSERT_EQ(retracted.size(), 1u);
+  EXPECT_EQ(retracted[0].last, 3u);
+}
+
 }  // namespace
 }  // namespace swarf
