@@ -139,6 +139,33 @@ Result<pocket::Model> dumbbell_20_model() {
   return pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
 }
 
+// Output moves for pocket::neck_runs, a point at a time: each move runs from the last point
+// to the new one and removes `deg` by the model.
+struct KeptPath {
+  pocket::LinkedPath lp;
+  std::vector<std::size_t> keep;
+  std::vector<pocket::KeptMove> kept = std::vector<pocket::KeptMove>(1);
+
+  void add(Vec2 at, double deg, bool link = false, bool jump = false) {
+    if (!lp.pts.empty()) {
+      lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
+      lp.jump.push_back(jump);
+      lp.entry.push_back(-1);
+      pocket::KeptMove km;
+      km.len = distance(lp.pts.back(), at);
+      km.deg = deg;
+      km.link = link;
+      km.fast = link;
+      kept.push_back(km);
+    }
+    keep.push_back(lp.pts.size());
+    lp.pts.push_back(at);
+  }
+  std::vector<pocket::NeckRun> runs(const pocket::Model& m) const {
+    return pocket::neck_runs(m, lp, keep, kept);
+  }
+};
+
 // Which runs of output moves count as a neck's slot (pocket::neck_runs), on the model of a
 // ø20 in a dumbbell whose neck is 20.08 mm wide, as random pocket 1088's (the model's
 // removal reads 145-165 degrees there where the sweep sees a full slot).
@@ -147,24 +174,10 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
   ASSERT_TRUE(m.ok()) << m.status().to_string();
   // `count` moves of 0.5 mm along y = y0 from x = x0, each removing `deg` by the model.
   auto runs = [&](double x0, double y0, int count, double deg) {
-    pocket::LinkedPath lp;
-    std::vector<std::size_t> keep;
-    std::vector<pocket::KeptMove> kept(1);
-    for (int k = 0; k <= count; ++k) {
-      lp.pts.push_back({x0 + 0.5 * k, y0});
-      keep.push_back(static_cast<std::size_t>(k));
-      if (k == 0) continue;
-      lp.kind.push_back(StepKind::kCut);
-      lp.jump.push_back(false);
-      lp.entry.push_back(-1);
-      pocket::KeptMove km;
-      km.len = 0.5;
-      km.deg = deg;
-      km.link = false;
-      km.fast = false;
-      kept.push_back(km);
-    }
-    return pocket::neck_runs(*m, lp, keep, kept);
+    KeptPath path;
+    for (int k = 0; k <= count; ++k)
+      path.add({x0 + 0.5 * k, y0}, deg);
+    return path.runs(*m);
   };
   const double axis = 25.04;  // the neck's axis; the tool has 0.04 mm each side
   const auto neck = runs(52.0, axis, 20, 130.0);
@@ -214,30 +227,13 @@ TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
     bool link, jump;
   };
   auto runs = [&](double x0, const std::vector<Pt>& gap) {
-    pocket::LinkedPath lp;
-    std::vector<std::size_t> keep;
-    std::vector<pocket::KeptMove> kept(1);
-    auto add = [&](Vec2 at, double deg, bool link, bool jump) {
-      if (!lp.pts.empty()) {
-        lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
-        lp.jump.push_back(jump);
-        lp.entry.push_back(-1);
-        pocket::KeptMove km;
-        km.len = distance(lp.pts.back(), at);
-        km.deg = deg;
-        km.link = link;
-        km.fast = link;
-        kept.push_back(km);
-      }
-      keep.push_back(lp.pts.size());
-      lp.pts.push_back(at);
-    };
-    add({x0, axis}, 0.0, false, false);
-    add({x0 + 0.6, axis}, 130.0, false, false);
+    KeptPath path;
+    path.add({x0, axis}, 0.0);
+    path.add({x0 + 0.6, axis}, 130.0);
     for (const Pt& g : gap)
-      add({g.x, g.y}, 20.0, g.link, g.jump);
-    add({x0 + 1.2, axis}, 130.0, false, false);
-    return pocket::neck_runs(*m, lp, keep, kept);
+      path.add({g.x, g.y}, 20.0, g.link, g.jump);
+    path.add({x0 + 1.2, axis}, 130.0);
+    return path.runs(*m);
   };
   // In the neck: back 0.3 mm, a link forward to where the first cut ended: one neck.
   const auto creep = runs(55.0, {{55.3, axis, false, false}, {55.6, axis, true, false}});
@@ -267,32 +263,14 @@ TEST(NeckPlunges, AHeavyMoveJustPastANeckBelongsToIt) {
   // `count` heavy cuts of 0.5 mm at 130 degrees from x = 55, 0.3 mm back, a link forward,
   // then a move of 0.4 mm removing `deg`.
   auto runs = [&](int count, double deg, bool retract) {
-    pocket::LinkedPath lp;
-    std::vector<std::size_t> keep;
-    std::vector<pocket::KeptMove> kept(1);
-    auto add = [&](double x, double d, bool link, bool jump) {
-      if (!lp.pts.empty()) {
-        lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
-        lp.jump.push_back(jump);
-        lp.entry.push_back(-1);
-        pocket::KeptMove km;
-        km.len = std::abs(x - lp.pts.back().x);
-        km.deg = d;
-        km.link = link;
-        km.fast = link;
-        kept.push_back(km);
-      }
-      keep.push_back(lp.pts.size());
-      lp.pts.push_back({x, axis});
-    };
-    add(55.0, 0.0, false, false);
-    for (int k = 1; k <= count; ++k)
-      add(55.0 + 0.5 * k, 130.0, false, false);
+    KeptPath path;
+    for (int k = 0; k <= count; ++k)
+      path.add({55.0 + 0.5 * k, axis}, k == 0 ? 0.0 : 130.0);
     const double end = 55.0 + 0.5 * count;
-    add(end - 0.3, 20.0, false, retract);
-    add(end, 0.0, true, false);
-    add(end + 0.4, deg, false, false);
-    return pocket::neck_runs(*m, lp, keep, kept);
+    path.add({end - 0.3, axis}, 20.0, false, retract);
+    path.add({end, axis}, 0.0, true);
+    path.add({end + 0.4, axis}, deg);
+    return path.runs(*m);
   };
   const auto past = runs(3, 108.0, false);
   ASSERT_EQ(past.size(), 1u);
