@@ -300,7 +300,8 @@ struct KeptMove {
 /// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
 /// walls within a millimetre of the tool on both sides (1 mm or longer); pieces of such
 /// runs less than a tool radius of path apart, between close walls all the way, are one,
-/// and so are moves of 100 degrees or more (and 1.25x the target) that near a neck's run.
+/// and a neck's run takes in moves of 100 degrees or more (and 1.25x the target) within a
+/// tool radius of path of it, between close walls.
 /// The removal angles neck_runs judges by (neck_plunges.cpp says why): a full slot
 /// anywhere, and a heavy cut between close walls. The output simplification keeps moves
 /// apart where a step crosses either, so a move's average does not hide them.

@@ -62,6 +62,11 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
     }
     return false;
   };
+  // Move q (keep[q - 1] -> keep[q]) runs between close walls, with no retract before it.
+  auto between_walls = [&](std::size_t q) {
+    const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
+    return !lp.jump[keep[q - 1]] && pinched(a) && pinched((a + b) * 0.5) && pinched(b);
+  };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
     return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && tight(q));
@@ -96,9 +101,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
       bool bridged = true;
       for (std::size_t g = prev.last + 1; g < r.n.first && bridged; ++g) {
         gap += kept[g].len;
-        const Vec2 a = lp.pts[keep[g - 1]], b = lp.pts[keep[g]];
-        bridged = gap <= bridge_mm && !lp.jump[keep[g - 1]] && pinched(a) &&
-                  pinched((a + b) * 0.5) && pinched(b);
+        bridged = gap <= bridge_mm && between_walls(g);
       }
       if (bridged) {  // (a run never starts with a jump: slot() says no)
         runs.back().n.last = r.n.last;
@@ -123,10 +126,6 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // machining time from 28 to 71 s.
   const double bridged_deg = std::max(100.0, 1.25 * m.target_deg);
   auto heavy = [&](std::size_t q) { return !kept[q].link && kept[q].deg >= bridged_deg; };
-  auto between_walls = [&](std::size_t q) {
-    const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
-    return !lp.jump[keep[q - 1]] && pinched(a) && pinched((a + b) * 0.5) && pinched(b);
-  };
   for (std::size_t i = 0; i < runs.size(); ++i) {
     NeckRun& n = runs[i].n;
     if (n.length_mm < (runs[i].full ? kMinRunMm : kTightRunMm)) continue;  // not a neck
