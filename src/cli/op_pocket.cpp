@@ -115,10 +115,11 @@ Result<OperationOutput> run(const OperationInput& in) {
   if (r->neck_plunges > 0) {
     out.summary["neck_plunges"] = r->neck_plunges;
     out.summary["neck_length_mm"] = s.plunged_length_mm;
-    char text[200];
+    char text[256];
     std::snprintf(text, sizeof text,
-                  "%.1f mm of necks as wide as the tool plunged through in %d crescent plunges "
-                  "a layer rather than slotted (--no-straight-plunge slots them)",
+                  "%.1f mm of necks as wide as the tool and of moves out of straight plunges' "
+                  "holes plunged through in %d crescent plunges a layer rather than slotted "
+                  "(--no-straight-plunge slots them)",
                   s.plunged_length_mm, r->neck_plunges);
     out.notes.push_back(text);
   }

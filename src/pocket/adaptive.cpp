@@ -525,6 +525,14 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     }
     k.deg = angle_of(m, static_cast<int>(k.px), k.len);
   }
+  // The first moves out of straight plunges' holes (neck_runs plunges them through where they
+  // cut heavily): after the first entry's, and after each new entry's.
+  if (e.solid && keep.size() > 1) kept[1].out_of_hole = true;
+  for (std::size_t q = 1; q + 1 < keep.size(); ++q) {
+    const std::size_t a = keep[q - 1];
+    if (lp.jump[a] && lp.entry[a] >= 0 && order[static_cast<std::size_t>(lp.entry[a])].solid)
+      kept[q + 1].out_of_hole = true;
+  }
   // The scallop rides' and dabs' cuts and the tip visits' moves into the tips run at the
   // cutting feed: they take wall slivers a pixel or two thick, which the pixels read as less
   // than they are (part-like pockets 2409, 2422, 2444, ø16-ø20 with 0.2-0.25 mm pixels: dabs

@@ -290,15 +290,18 @@ void keep_chords_off_walls(const Model& model, LinkedPath& lp);
 
 /// What a kept output move removes in the re-simulation: pixels, path length, its angle
 /// (degrees), whether it is a link (removes at most cut_px a step) and whether it may go at
-/// the link feed (at most graze_px a step).
+/// the link feed (at most graze_px a step); and whether it is the first move out of the
+/// hole of a straight plunge into uncut material.
 struct KeptMove {
   double px = 0.0, len = 0.0, deg = 0.0;
   bool link = true, fast = true;
+  bool out_of_hole = false;
 };
 /// A run of kept moves first..last (indices into `keep`, each move keep[q - 1] -> keep[q])
 /// that cut a full slot: a neck barely wider than the tool (neck_plunges.cpp). Runs are
 /// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
-/// walls within a millimetre of the tool on both sides (1 mm or longer); pieces of such
+/// walls within a millimetre of the tool on both sides (1 mm or longer), or 110 degrees or
+/// more out of a straight plunge's hole (however short); pieces of such
 /// runs less than a tool radius of path apart, between close walls all the way, are one,
 /// and a neck's run takes in moves of 100 degrees or more (and 1.25x the target) within a
 /// tool radius of path of it, between close walls.

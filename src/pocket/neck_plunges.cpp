@@ -67,13 +67,23 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
     return !lp.jump[keep[q - 1]] && pinched(a) && pinched((a + b) * 0.5) && pinched(b);
   };
+  // A move out of a straight plunge's hole into the material round it touches it across its
+  // whole front, a full slot however short (the plunge went straight down because nothing
+  // else fits there: the hole is walled in, with slivers between it and the walls that the
+  // model does not see). Random pocket 1535: a ø10 tip visit 0.11 mm out of such a hole
+  // into a corner's tip, 135 degrees by the model, 180 by the sweep; plunged at the tip
+  // instead.
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
-    return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && tight(q));
+    return kept[q].deg >= kNeckSlotDeg ||
+           (kept[q].deg >= kNeckTightDeg && (kept[q].out_of_hole || tight(q)));
   };
   struct Run {
     NeckRun n;
     bool full = false;  // a full slot by the model itself
+  };
+  auto min_length_mm = [&](const Run& r) {
+    return kept[r.n.first].out_of_hole ? 0.0 : r.full ? kMinRunMm : kTightRunMm;
   };
   std::vector<Run> runs;
   for (std::size_t q = 1; q < keep.size();) {
@@ -128,7 +138,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   auto heavy = [&](std::size_t q) { return !kept[q].link && kept[q].deg >= bridged_deg; };
   for (std::size_t i = 0; i < runs.size(); ++i) {
     NeckRun& n = runs[i].n;
-    if (n.length_mm < (runs[i].full ? kMinRunMm : kTightRunMm)) continue;  // not a neck
+    if (n.length_mm < min_length_mm(runs[i])) continue;  // not a neck
     const std::size_t next_first = i + 1 < runs.size() ? runs[i + 1].n.first : keep.size();
     double gap = 0.0;
     for (std::size_t g = n.last + 1; g < next_first && between_walls(g); ++g) {
@@ -156,7 +166,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // Tight runs shorter than a millimetre are mostly trochoidal loops in a channel, one
   // move of each reading heavy (random pocket 998: five plunges for no slot by the sweep).
   for (const Run& r : runs)
-    if (r.n.length_mm >= (r.full ? kMinRunMm : kTightRunMm)) out.push_back(r.n);
+    if (r.n.length_mm >= min_length_mm(r)) out.push_back(r.n);
   return out;
 }
 

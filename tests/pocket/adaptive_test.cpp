@@ -428,6 +428,17 @@ TEST(AdaptivePocket, RandomPocketWhoseCreepGoesOnPastANecksLastPlunge) {
   EXPECT_GT(o.result.neck_plunges, 0);
 }
 
+// The corner of pocket 1535 of bench/pocket_random.sh (ø10 at 5 %) beside a round island,
+// where the tool barely fits: it goes straight down there, and a 0.11 mm tip visit out of
+// the hole into the corner was a full slot by the sweep (0.1 mm; 135 degrees by the model,
+// whose pixels miss the slivers between the hole and the walls). It plunges at the tip.
+TEST(AdaptivePocket, RandomPocketWithATipVisitOutOfAStraightPlungesHole) {
+  const Outcome o = expect_random_pocket_correct("random_seed1535_corner.json", 10.0, 0.5);
+  EXPECT_EQ(o.sweep.slot_length_mm, 0.0);
+  EXPECT_GE(o.result.straight_plunges, 1);
+  EXPECT_GE(o.result.neck_plunges, 1);
+}
+
 // Pocket 894 of bench/pocket_random.sh (ø20 at 30 %): below a round island, beside a
 // square one and above the wall, the tool fits in a patch of centres 0.2 x 0.3 mm with
 // 0.05 mm of room and no pixel centre in it. Only that patch reaches 49 mm^2 there, less

@@ -146,7 +146,7 @@ struct KeptPath {
   std::vector<std::size_t> keep;
   std::vector<pocket::KeptMove> kept = std::vector<pocket::KeptMove>(1);
 
-  void add(Vec2 at, double deg, bool link = false, bool jump = false) {
+  void add(Vec2 at, double deg, bool link = false, bool jump = false, bool out_of_hole = false) {
     if (!lp.pts.empty()) {
       lp.kind.push_back(link ? StepKind::kLink : StepKind::kCut);
       lp.jump.push_back(jump);
@@ -156,6 +156,7 @@ struct KeptPath {
       km.deg = deg;
       km.link = link;
       km.fast = link;
+      km.out_of_hole = out_of_hole;
       kept.push_back(km);
     }
     keep.push_back(lp.pts.size());
@@ -287,6 +288,29 @@ TEST(NeckPlunges, AHeavyMoveJustPastANeckBelongsToIt) {
   const auto retracted = runs(3, 108.0, true);
   ASSERT_EQ(retracted.size(), 1u);
   EXPECT_EQ(retracted[0].last, 3u);
+}
+
+// The first move out of a straight plunge's hole into the material round it is a full slot
+// however short (random pocket 1535: a ø10 tip visit 0.11 mm out of such a hole into a
+// corner's tip read 135 degrees by the model, 180 by the sweep): plunged through from 110
+// degrees, in the open chamber too. Not a lighter move, not the same move elsewhere.
+TEST(NeckPlunges, AHeavyMoveOutOfAStraightPlungesHoleIsPlungedThrough) {
+  auto m = dumbbell_20_model();
+  ASSERT_TRUE(m.ok()) << m.status().to_string();
+  auto runs = [&](double deg, bool out_of_hole) {
+    KeptPath path;
+    path.add({15.0, 25.0}, 0.0);
+    path.add({14.89, 25.05}, deg, false, false, out_of_hole);
+    path.add({15.0, 25.0}, 50.0);
+    return path.runs(*m);
+  };
+  const auto tip = runs(135.0, true);
+  ASSERT_EQ(tip.size(), 1u);
+  EXPECT_EQ(tip[0].first, 1u);
+  EXPECT_EQ(tip[0].last, 1u);
+  EXPECT_NEAR(tip[0].length_mm, std::hypot(0.11, 0.05), 1e-12);
+  EXPECT_TRUE(runs(105.0, true).empty());   // a lighter cut is cut as it is
+  EXPECT_TRUE(runs(135.0, false).empty());  // elsewhere: too short for a run of its own
 }
 
 }  // namespace
