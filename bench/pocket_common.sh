@@ -1,6 +1,6 @@
 # Shared by the pocket benchmark scripts (sourced, with `build` set): the build's swarf and
-# independent sweep, a temporary folder removed on exit, the FreeCAD check and the target
-# engagement angle of a radial stepover.
+# independent sweep, a temporary folder removed on exit, the FreeCAD check, the target
+# engagement angle of a radial stepover and the summary of a batch's sweep lines.
 swarf=$build/swarf
 sweep=$build/bench/swarf_pocket_sweep
 [ -x "$swarf" ] && [ -x "$sweep" ] || { echo "build first (scripts/build.sh)" >&2; exit 2; }
@@ -37,4 +37,17 @@ isl = [[[15 + 25 * i + 4 * math.cos(math.pi * k / 16), 15 + 30 * j + 4 * math.si
         for k in range(32)] for i in range(3) for j in range(2)]
 json.dump({"outer": [[0, 0], [80, 0], [80, 60], [0, 60]], "islands": isl}, open(sys.argv[1], "w"))
 PY
+}
+# sweep_summary FILE NOUN: one line over the sweep lines of FILE (one run each, or FAILED):
+# how many, failures (and how many of them a tool too large for the pocket), residual,
+# gouge and full slot in all, the share within +-20 %, climb and reversals on average.
+sweep_summary() {
+  awk -v noun="$2" '/FAILED/ { f++; if (/tool too large/) big++; next }
+     /gouge/ { for (i = 1; i <= NF; i++) { if ($i == "gouge") g = ($(i+1) > g ? $(i+1) : g);
+                                            if ($i == "residual") r += $(i+1);
+                                            if ($i == "within20") { w += $(i+1); n++ }
+                                            if ($i == "slot") sl += $(i+1);
+                                            if ($i == "climb") c += $(i+1);
+                                            if ($i == "reversals") rv += substr($(i+2), 2) } }
+     END { printf "%s %d, failed %d (%d of them a tool too large for the pocket), residual %.2f mm2 in all, within +-20 %% %.1f %% on average, full slot %.1f mm in all, deepest gouge %.3f mm, climb %.1f %% and %.1f reversals per m on average\n", noun, n + f, f, big, r, (n ? w / n : 0), sl, g, (n ? c / n : 0), (n ? rv / n : 0) }' "$1"
 }

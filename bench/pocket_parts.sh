@@ -61,9 +61,4 @@ for f in "${pockets[@]}"; do
       "$("$sweep" "$f" "$d" "$(target_deg "$d" "$so")" "$tmp/p.nc")"
   done
 done | tee "$tmp/out"
-awk '/FAILED/ { f++; if (/tool too large/) big++; next }
-     /gouge/ { for (i = 1; i <= NF; i++) { if ($i == "gouge") g = ($(i+1) > g ? $(i+1) : g);
-                                            if ($i == "residual") r += $(i+1);
-                                            if ($i == "within20") { w += $(i+1); n++ }
-                                            if ($i == "slot") sl += $(i+1) } }
-     END { printf "runs %d, failed %d (%d of them a tool too large for the pocket), residual %.2f mm2 in all, within +-20 %% %.1f %% on average, full slot %.1f mm in all, deepest gouge %.3f mm\n", n + f, f, big, r, (n ? w / n : 0), sl, g }' "$tmp/out"
+sweep_summary "$tmp/out" runs

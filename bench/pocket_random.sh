@@ -30,11 +30,4 @@ for s in $(seq "$first" "$last"); do
   fi
   printf "%-5s D%-3s %-6s %-6s %-3s %s\n" "$s" "$D" "$so" "$kind" "$ni" "$("$sweep" "${sweep_flags[@]}" "$tmp/p.json" "$D" "$target" "$tmp/p.nc")"
 done | tee "$tmp/out"
-awk '/FAILED/ { f++; next }
-     /gouge/ { for (i = 1; i <= NF; i++) { if ($i == "gouge") g = ($(i+1) > g ? $(i+1) : g);
-                                            if ($i == "residual") r += $(i+1);
-                                            if ($i == "within20") { w += $(i+1); n++ }
-                                            if ($i == "slot") sl += $(i+1);
-                                            if ($i == "climb") c += $(i+1);
-                                            if ($i == "reversals") rv += substr($(i+2), 2) } }
-     END { printf "pockets %d, failed %d, residual %.1f mm2 in all, within +-20 %% %.1f %% on average, full slot %.1f mm in all, deepest gouge %.3f mm, climb %.1f %% and %.1f reversals per m on average\n", n + f, f, r, (n ? w / n : 0), sl, g, (n ? c / n : 0), (n ? rv / n : 0) }' "$tmp/out"
+sweep_summary "$tmp/out" pockets
