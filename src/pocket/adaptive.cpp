@@ -136,9 +136,10 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
     map.width = m.grid.width;
     map.height = m.grid.height;
     map.cells.assign(static_cast<std::size_t>(map.width) * map.height, 0u);
-    for (int j = 0; j < map.height; ++j)
+    for (int j = 0; j < map.height; ++j) {
       for (int i = 0; i < map.width; ++i)
         if (m.pocket.get(i, j)) map.cells[m.grid.index(i, j)] = 1u;
+    }
   }
   Recorder rec{&map.cells, map.width, 2u};
   const pocket::CutVisitor tag = want_map ? record : nullptr;
@@ -210,10 +211,11 @@ double path_time_s(const LinkedPath& lp, const pocket::LinkCosts& c) {
   double t = 0.0;
   for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
     const double l = distance(lp.pts[k], lp.pts[k + 1]);
-    if (lp.jump[k])
+    if (lp.jump[k]) {
       t += pocket::retract_minutes(c, l) * 60.0;
-    else
+    } else {
       t += l / (lp.kind[k] == StepKind::kLink ? c.link_feed_mm_min : c.feed_mm_min) * 60.0;
+    }
   }
   return t;
 }
@@ -482,9 +484,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const int layers = std::max(1, static_cast<int>(std::ceil(total / sd - 1e-9)));
   res.layers = layers;
   res.straight_plunges = e.solid ? 1 : 0;
-  for (std::size_t k = 0; k < lp.entry.size(); ++k)
+  for (std::size_t k = 0; k < lp.entry.size(); ++k) {
     if (lp.jump[k] && lp.entry[k] >= 0 && order[static_cast<std::size_t>(lp.entry[k])].solid)
       ++res.straight_plunges;
+  }
   // The link feed where the re-simulation finds a move removing at most graze_px a step.
   // The chip of a cut of small radial depth ae thins as sqrt(ae / D): at the link feed, k
   // times the cutting feed, a step removing 1 / k^2 of a target step makes the chip of a
@@ -586,9 +589,10 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     const double z_clear = layer == 1 ? z_prev + 1.0 : z_prev;
     entry_moves(tp, e, params, z_prev + 1.0, z_clear, z);
     Vec2 at = e.helix_radius_mm > 0.0 || e.plunge ? e.start : e.ramp_b;
-    if (distance(at, lp.pts.front()) > 1e-9)
+    if (distance(at, lp.pts.front()) > 1e-9) {
       tp.moves.push_back(
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
+    }
     std::size_t next_neck = 0;
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];

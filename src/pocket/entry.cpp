@@ -178,9 +178,10 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.h = p.resolution_mm > 0.0 ? p.resolution_mm : m.rule_h;
 
   Box2 box;
-  for (const Ring& ring : pocket.region.rings)
+  for (const Ring& ring : pocket.region.rings) {
     for (Vec2 q : ring)
       box.add(q);
+  }
   double margin_mm = r + m.step_mm + p.wall_stock_mm;
   auto pixels_at = [&](double h, double margin) {
     const Vec2 size = box.size() + Vec2{2.0 * (margin + 4.0 * h), 2.0 * (margin + 4.0 * h)};
@@ -205,12 +206,13 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
     double h = m.h;
     for (int k = 0; k < 60 && pixels_at(h, budget_margin_mm) > p.max_pixels; ++k)
       h *= 1.02;
-    if (h > coarsest)
+    if (h > coarsest) {
       return bad_parameter(
           "pocket " + pocket.source + ": " + mm(box.size().x) + " x " + mm(box.size().y) +
           " is too large for a " + mm(2.0 * r) + " tool within the pixel budget (" +
           std::to_string(static_cast<long long>(p.max_pixels)) + " pixels, resolution at least " +
           mm(coarsest) + "); split the pocket, use a larger tool or raise max_pixels");
+    }
     m.h = h;
     if (auto_step) {
       m.step_mm = std::clamp(64.0 * h * h / m.stepover_mm, m.step_mm, longest_auto_step_mm);
@@ -229,12 +231,13 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.link_lift_mm = std::max(2.0 * (p.wall_scallop_mm > 0.0 ? p.wall_scallop_mm : 0.1), m.h);
 
   m.grid = Grid::covering(box, m.h, margin_mm + 4.0 * m.h);
-  if (static_cast<double>(m.grid.width) * m.grid.height > p.max_pixels)
+  if (static_cast<double>(m.grid.width) * m.grid.height > p.max_pixels) {
     return bad_parameter("pocket " + pocket.source + ": resolution " + mm(m.h) + " needs " +
                          std::to_string(static_cast<long long>(m.grid.width) * m.grid.height) +
                          " pixels, more than max_pixels (" +
                          std::to_string(static_cast<long long>(p.max_pixels)) +
                          "); raise resolution_mm or max_pixels");
+  }
   m.pocket = rasterize(pocket.region, m.grid);
   // Forbidden: outside the pocket, or closer to a wall than wall stock + half a pixel, by
   // exact distance to the outline (the grid alone is only good to a pixel). The half pixel
@@ -245,10 +248,11 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   m.region = pocket.region;
   m.walls = WallIndex(m.region);
   m.wall_stock_mm = p.wall_stock_mm;
-  for (int j = 0; j < m.grid.height; ++j)
+  for (int j = 0; j < m.grid.height; ++j) {
     for (int w = 0; w < m.pocket.words_per_row(); ++w)
       m.forbidden.set_word(j, w, ~m.pocket.word(j, w));
-  for (const Ring& ring : pocket.region.rings)
+  }
+  for (const Ring& ring : pocket.region.rings) {
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
       const Vec2 lo = m.grid.to_px({std::min(a.x, b.x) - keep, std::min(a.y, b.y) - keep});
@@ -257,11 +261,14 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
       const int i1 = std::min(m.grid.width - 1, static_cast<int>(std::ceil(hi.x)));
       const int j0 = std::max(0, static_cast<int>(std::floor(lo.y)));
       const int j1 = std::min(m.grid.height - 1, static_cast<int>(std::ceil(hi.y)));
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) {
+        for (int i = i0; i <= i1; ++i) {
           if (!m.forbidden.get(i, j) && point_segment_distance(m.grid.to_world(i, j), a, b) < keep)
             m.forbidden.set(i, j, true);
+        }
+      }
     }
+  }
   m.clearance_sq = squared_distance_transform(m.forbidden, true);
   // Material is what the tool can reach: pixels within R of a centre whose disk is free.
   // Corners the tool cannot enter and the wall margin are not material, so they neither
@@ -269,23 +276,27 @@ Result<Model> make_model(const Pocket& pocket, const Tool& tool, const AdaptiveP
   {
     const double r_px = r / m.h;
     m.free_centres = BitImage(m.grid.width, m.grid.height);
-    for (int j = 0; j < m.grid.height; ++j)
-      for (int i = 0; i < m.grid.width; ++i)
+    for (int j = 0; j < m.grid.height; ++j) {
+      for (int i = 0; i < m.grid.width; ++i) {
         if (std::sqrt(static_cast<double>(m.clearance_sq[m.grid.index(i, j)])) > r_px)
           m.free_centres.set(i, j, true);
+      }
+    }
     BitImage reach = dilate_by_disk(m.free_centres, r_px);
     m.tight_centres = tight_centres(m, m.free_centres, reach);
     for (Vec2 c : m.tight_centres)
       add_disk(m.grid, c, r, reach);
     m.material = BitImage(m.grid.width, m.grid.height);
-    for (int j = 0; j < m.grid.height; ++j)
+    for (int j = 0; j < m.grid.height; ++j) {
       for (int w = 0; w < m.pocket.words_per_row(); ++w)
         m.material.set_word(j, w, m.pocket.word(j, w) & ~m.forbidden.word(j, w) & reach.word(j, w));
+    }
   }
   double perim = 0.0;
-  for (const Ring& ring : pocket.region.rings)
+  for (const Ring& ring : pocket.region.rings) {
     for (std::size_t k = 0; k < ring.size(); ++k)
       perim += distance(ring[k], ring[(k + 1) % ring.size()]);
+  }
   m.boundary_round_mm =
       perim + 2.0 * kPi * r * static_cast<double>(pocket.island_count()) + 4.0 * r;
   double a = 0.0;
@@ -372,10 +383,11 @@ bool entry_at(const Model& m, int idx, Entry& e) {
   const double need = r + m.wall_stock_mm + kWallClearanceMm;
   while (best_len >= min_ramp && m.walls.segment_distance(ba, bb) < need) {
     const Vec2 d = (bb - ba) * (m.h / best_len);
-    if (m.walls.distance(ba) < m.walls.distance(bb))
+    if (m.walls.distance(ba) < m.walls.distance(bb)) {
       ba = ba + d;
-    else
+    } else {
       bb = bb - d;
+    }
     best_len = distance(ba, bb);
   }
   if (best_len < min_ramp) return false;

@@ -273,16 +273,17 @@ std::vector<std::size_t> pull_taut(const Model& m, const PixelStock& stock,
         break;
       }
     }
-    if (bad == last + 1 && good != last && straight_ok(m, stock, pts[cur], pts[last]))
+    if (bad == last + 1 && good != last && straight_ok(m, stock, pts[cur], pts[last])) {
       good = last;
-    else {
+    } else {
       std::size_t lo = good, hi = std::min(bad, last + 1);
       while (hi - lo > 1) {
         const std::size_t mid = (lo + hi) / 2;
-        if (straight_ok(m, stock, pts[cur], pts[mid]))
+        if (straight_ok(m, stock, pts[cur], pts[mid])) {
           lo = mid;
-        else
+        } else {
           hi = mid;
+        }
       }
       good = lo;
     }
@@ -488,10 +489,11 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
   auto append_raw = [&](std::size_t first, std::size_t last, bool link) {
     for (std::size_t k = first; k < last; ++k) {
       if (raw.jump[k]) {
-        if (raw.entry[k] >= 0)
+        if (raw.entry[k] >= 0) {
           cut_entry(stock, m, entries[static_cast<std::size_t>(raw.entry[k])]);
-        else
+        } else {
           stock.stamp(raw.pts[k + 1]);
+        }
       } else {
         stock.cut(raw.pts[k], raw.pts[k + 1]);
       }
@@ -667,9 +669,10 @@ LinkedPath postprocess(const Model& m, const std::vector<Entry>& entries, const 
       for (int q = 1; q < n && ok; ++q)
         ok = !walls.gouges(res[k - 1] + (res[k] - res[k - 1]) * (static_cast<double>(q) / n));
     }
-    if (ok)
+    if (ok) {
       for (std::size_t k = 0; k < res.size(); ++k)
         smoothed[a + k] = res[k];
+    }
   }
   out.pts = std::move(smoothed);
   for (const auto& [k, off] : lifts)
