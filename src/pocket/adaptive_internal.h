@@ -299,9 +299,10 @@ struct KeptMove {
 };
 /// A run of kept moves first..last (indices into `keep`, each move keep[q - 1] -> keep[q])
 /// that cut a full slot: a neck barely wider than the tool (neck_plunges.cpp). Runs are
-/// moves removing 160 degrees or more (0.2 mm or longer), or 110 degrees or more between
-/// walls within a millimetre of the tool on both sides (1 mm or longer), or 110 degrees or
-/// more out of a straight plunge's hole (however short); pieces of such
+/// moves removing 160 degrees or more, or 110 degrees or more with under four pixels of room
+/// beside the tool (0.2 mm or longer), or 110 degrees or more between walls within a
+/// millimetre of the tool on both sides (1 mm or longer), or 110 degrees or more out of a
+/// straight plunge's hole (however short); pieces of such
 /// runs less than a tool radius of path apart, between close walls all the way, are one,
 /// and a neck's run takes in moves of 100 degrees or more (and 1.25x the target) within a
 /// tool radius of path of it, between close walls.

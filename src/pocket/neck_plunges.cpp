@@ -53,6 +53,34 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
       in += walled(a + (b - a) * (static_cast<double>(k) / (samples - 1)), n) ? 1 : 0;
     return 2 * in >= samples;
   };
+  // Where the room beside the tool (the narrowest chord through its centre, less the
+  // diameter) is under four pixels, a heavy cut is a full slot too, from 0.2 mm: the tool
+  // fills the way, and the model, whose material is what the free pixel centres reach (a
+  // pixel or so short of the exact reach), misses the slivers on both sides. The line
+  // between the walls may run at any angle to the move: at a channel's mouth one wall is
+  // the corner of an island ahead (random pocket 617 at 10 %: a ø20 crept into the mouth of
+  // a channel 0.02 mm wider than itself past a square island's corner, 143 and 134 degrees
+  // by the model over 1.5 and 0.5 mm, 170-177 by the sweep; the move's normal met no island
+  // there, so it was not tight). 64 lines, 2.8 degrees apart: at a corner the line that
+  // meets it within the margin turns through a few degrees only.
+  const double narrow_reach = m.radius_mm + m.wall_stock_mm + 2.0 * m.h;
+  auto narrow_at = [&](Vec2 p) {
+    for (int k = 0; k < 64; ++k) {
+      const double a = kPi * k / 64.0;
+      const Vec2 n{std::cos(a), std::sin(a)};
+      if (!m.walls.inside(p + n * narrow_reach) && !m.walls.inside(p - n * narrow_reach))
+        return true;
+    }
+    return false;
+  };
+  auto narrow = [&](std::size_t q) {
+    const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
+    const int samples = std::max(2, static_cast<int>(std::ceil(distance(a, b) / 0.5)) + 1);
+    int in = 0;
+    for (int k = 0; k < samples; ++k)
+      in += narrow_at(a + (b - a) * (static_cast<double>(k) / (samples - 1))) ? 1 : 0;
+    return 2 * in >= samples;
+  };
   // Between walls within reach on two opposite sides, whichever way the line between them
   // runs (every 22.5 degrees): in a channel, whatever the heading of the move there.
   auto pinched = [&](Vec2 p) {
@@ -73,14 +101,18 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // model does not see). Random pocket 1535: a ø10 tip visit 0.11 mm out of such a hole
   // into a corner's tip, 135 degrees by the model, 180 by the sweep; plunged at the tip
   // instead.
+  // A full slot by the model itself, or a heavy cut where the room is under half a
+  // millimetre: runs of such moves are necks from kMinRunMm.
+  auto full_slot = [&](std::size_t q) {
+    return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && narrow(q));
+  };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
-    return kept[q].deg >= kNeckSlotDeg ||
-           (kept[q].deg >= kNeckTightDeg && (kept[q].out_of_hole || tight(q)));
+    return full_slot(q) || (kept[q].deg >= kNeckTightDeg && (kept[q].out_of_hole || tight(q)));
   };
   struct Run {
     NeckRun n;
-    bool full = false;  // a full slot by the model itself
+    bool full = false;  // a full slot (full_slot)
   };
   auto min_length_mm = [&](const Run& r) {
     return kept[r.n.first].out_of_hole ? 0.0 : r.full ? kMinRunMm : kTightRunMm;
@@ -95,7 +127,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
     r.n.first = q;
     for (; q < keep.size() && slot(q); ++q) {
       r.n.length_mm += kept[q].len;
-      r.full = r.full || kept[q].deg >= kNeckSlotDeg;
+      r.full = r.full || full_slot(q);
     }
     r.n.last = q - 1;
     // A channel only a few tenths wider than the tool, where the chooser creeps: each

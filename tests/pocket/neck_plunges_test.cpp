@@ -119,8 +119,10 @@ TEST(NeckPlunges, ANeckAsWideAsTheToolIsPlungedThroughNotSlotted) {
   EXPECT_EQ(plunges, plunged.result.neck_plunges);
 }
 
-// The model of a ø20 in a dumbbell of two chambers whose neck is 20.08 mm wide (x 50-70,
-// y 15-35.08), as random pocket 1088's.
+// The model of a ø20 in a dumbbell of two chambers whose neck is 21 mm wide (x 50-70, y
+// 15-36): half a millimetre of room each side, within reach of the rules for heavy cuts
+// between close walls (a millimetre) but more than the four pixels under which a heavy cut
+// is a slot by itself (AHeavyCutWithUnderFourPixelsOfRoomIsASlot).
 Result<pocket::Model> dumbbell_20_model() {
   const Pocket p = make_pocket({{0, 0},
                                 {50, 0},
@@ -130,8 +132,8 @@ Result<pocket::Model> dumbbell_20_model() {
                                 {120, 0},
                                 {120, 50},
                                 {70, 50},
-                                {70, 35.08},
-                                {50, 35.08},
+                                {70, 36.0},
+                                {50, 36.0},
                                 {50, 50},
                                 {0, 50}},
                                {}, "dumbbell 20")
@@ -168,8 +170,9 @@ struct KeptPath {
 };
 
 // Which runs of output moves count as a neck's slot (pocket::neck_runs), on the model of a
-// ø20 in a dumbbell whose neck is 20.08 mm wide, as random pocket 1088's (the model's
-// removal reads 145-165 degrees there where the sweep sees a full slot).
+// ø20 in a dumbbell whose neck is 21 mm wide (random pocket 1088's was 20.08 mm, where the
+// model's removal read 145-165 degrees and the sweep saw a full slot; such a neck is narrow
+// now, AHeavyCutWithUnderFourPixelsOfRoomIsASlot).
 TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
   auto m = dumbbell_20_model();
   ASSERT_TRUE(m.ok()) << m.status().to_string();
@@ -180,7 +183,7 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
       path.add({x0 + 0.5 * k, y0}, deg);
     return path.runs(*m);
   };
-  const double axis = 25.04;  // the neck's axis; the tool has 0.04 mm each side
+  const double axis = 25.5;  // the neck's axis; the tool has 0.5 mm each side
   const auto neck = runs(52.0, axis, 20, 130.0);
   ASSERT_EQ(neck.size(), 1u);
   EXPECT_EQ(neck[0].first, 1u);
@@ -220,7 +223,7 @@ TEST(NeckPlunges, RunsAreFullSlotsOrHeavyCutsBetweenCloseWalls) {
 TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
   auto m = dumbbell_20_model();
   ASSERT_TRUE(m.ok()) << m.status().to_string();
-  const double axis = 25.04;
+  const double axis = 25.5;
   // Two heavy cuts 0.6 mm each (a heavy run needs 1 mm), from x0 and from x0 + 0.6, with
   // the path in between: `gap` points after the first.
   struct Pt {
@@ -260,7 +263,7 @@ TEST(NeckPlunges, PiecesOfACreepThroughANeckAreOneNeck) {
 TEST(NeckPlunges, AHeavyMoveJustPastANeckBelongsToIt) {
   auto m = dumbbell_20_model();
   ASSERT_TRUE(m.ok()) << m.status().to_string();
-  const double axis = 25.04;
+  const double axis = 25.5;
   // `count` heavy cuts of 0.5 mm at 130 degrees from x = 55, 0.3 mm back, a link forward,
   // then a move of 0.4 mm removing `deg`.
   auto runs = [&](int count, double deg, bool retract) {
@@ -311,6 +314,39 @@ TEST(NeckPlunges, AHeavyMoveOutOfAStraightPlungesHoleIsPlungedThrough) {
   EXPECT_NEAR(tip[0].length_mm, std::hypot(0.11, 0.05), 1e-12);
   EXPECT_TRUE(runs(105.0, true).empty());   // a lighter cut is cut as it is
   EXPECT_TRUE(runs(135.0, false).empty());  // elsewhere: too short for a run of its own
+}
+
+// A heavy cut where the room beside the tool is under four of the model's pixels (0.75 mm
+// here) is a full slot from 0.2 mm, whichever way the walls lie about the move: at a
+// channel's mouth the far wall is an island's corner ahead (random pocket 617: a ø20 crept
+// 1.5 and 0.5 mm into the mouth of a channel 0.02 mm wider than itself, 143 and 134 degrees
+// by the model, 170-177 by the sweep). Here a ø20 runs up the left wall (x = 0) towards the
+// lower-left corner of a square island `gap` mm from it, its normal passing below the
+// island.
+TEST(NeckPlunges, AHeavyCutWithUnderFourPixelsOfRoomIsASlot) {
+  auto runs = [](double gap, double y0, double length, double deg) {
+    const Pocket p = make_pocket({{0, -40}, {60, -40}, {60, 40}, {0, 40}},
+                                 {{{gap, 0}, {40, 0}, {40, 30}, {gap, 30}}}, "mouth")
+                         .value();
+    auto m = pocket::make_model(p, testing::flat_mill(20.0), testing::params_3mm_deep(3.0));
+    EXPECT_TRUE(m.ok()) << m.status().to_string();
+    // Four pixels lie between the rooms tried: 0.03 mm (narrow) and 1 mm (not).
+    EXPECT_GT(4.0 * m->h, 0.03);
+    EXPECT_LT(4.0 * m->h, 1.0);
+    KeptPath path;
+    path.add({0.5 * gap, y0}, 0.0);
+    path.add({0.5 * gap, y0 + length}, deg);
+    return path.runs(*m);
+  };
+  const auto mouth = runs(20.03, -2.0, 1.5, 135.0);
+  ASSERT_EQ(mouth.size(), 1u);
+  EXPECT_EQ(mouth[0].first, 1u);
+  EXPECT_EQ(mouth[0].last, 1u);
+  EXPECT_EQ(runs(20.03, -1.0, 0.5, 135.0).size(), 1u);  // from 0.2 mm
+  EXPECT_TRUE(runs(20.03, -1.0, 0.15, 135.0).empty());  // shorter: a pixel's misreading
+  EXPECT_TRUE(runs(20.03, -2.0, 1.5, 105.0).empty());   // a lighter cut is cut as it is
+  EXPECT_TRUE(runs(21.0, -2.0, 1.5, 135.0).empty());    // a millimetre of room
+  EXPECT_TRUE(runs(20.03, -20.0, 1.5, 135.0).empty());  // along the wall, far from the island
 }
 
 }  // namespace
