@@ -95,17 +95,17 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
     return !lp.jump[keep[q - 1]] && pinched(a) && pinched((a + b) * 0.5) && pinched(b);
   };
+  // A full slot by the model itself, or a heavy cut with under four pixels of room: runs of
+  // such moves are necks from kMinRunMm.
+  auto full_slot = [&](std::size_t q) {
+    return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && narrow(q));
+  };
   // A move out of a straight plunge's hole into the material round it touches it across its
   // whole front, a full slot however short (the plunge went straight down because nothing
   // else fits there: the hole is walled in, with slivers between it and the walls that the
   // model does not see). Random pocket 1535: a ø10 tip visit 0.11 mm out of such a hole
   // into a corner's tip, 135 degrees by the model, 180 by the sweep; plunged at the tip
   // instead.
-  // A full slot by the model itself, or a heavy cut where the room is under half a
-  // millimetre: runs of such moves are necks from kMinRunMm.
-  auto full_slot = [&](std::size_t q) {
-    return kept[q].deg >= kNeckSlotDeg || (kept[q].deg >= kNeckTightDeg && narrow(q));
-  };
   auto slot = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || kept[q].link) return false;
     return full_slot(q) || (kept[q].deg >= kNeckTightDeg && (kept[q].out_of_hole || tight(q)));
