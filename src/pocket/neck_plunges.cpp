@@ -36,22 +36,35 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // Slot runs this close along the path, pinched between, are one neck (below).
   const double bridge_mm = std::max(1.0, m.radius_mm);
   const double reach = m.radius_mm + m.wall_stock_mm + kTightMarginMm;
-  auto walled = [&](Vec2 p, Vec2 n) {
-    return !m.walls.inside(p + n * reach) && !m.walls.inside(p - n * reach);
+  // Walls within `r` of p on both sides along the line through p of direction n.
+  auto walled = [&](Vec2 p, Vec2 n, double r) {
+    return !m.walls.inside(p + n * r) && !m.walls.inside(p - n * r);
   };
-  // Walled over at least half the move's length, sampled every half millimetre: a move
-  // that runs into a channel from its mouth is tight over the part in it (random pocket
-  // 1130: a ø12 cut 7.4 mm of full slot by the sweep along a boundary move that began 0.75
-  // mm before two islands 12.07 mm apart, where one of them was not yet beside it; the
+  // Walled within `r` along any of `lines` lines through p, evenly spread over 180 degrees.
+  auto walled_any = [&](Vec2 p, int lines, double r) {
+    for (int k = 0; k < lines; ++k) {
+      const double a = kPi * k / lines;
+      if (walled(p, Vec2{std::cos(a), std::sin(a)}, r)) return true;
+    }
+    return false;
+  };
+  // Whether at(point) holds over at least half of move q, sampled every half millimetre: a
+  // move that runs into a channel from its mouth is tight over the part in it (random
+  // pocket 1130: a ø12 cut 7.4 mm of full slot by the sweep along a boundary move that began
+  // 0.75 mm before two islands 12.07 mm apart, where one of them was not yet beside it; the
   // move's ends and middle had to be walled before).
-  auto tight = [&](std::size_t q) {
+  auto over_half = [&](std::size_t q, auto&& at) {
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
-    const Vec2 d = normalized(b - a), n{-d.y, d.x};
     const int samples = std::max(2, static_cast<int>(std::ceil(distance(a, b) / 0.5)) + 1);
     int in = 0;
     for (int k = 0; k < samples; ++k)
-      in += walled(a + (b - a) * (static_cast<double>(k) / (samples - 1)), n) ? 1 : 0;
+      in += at(a + (b - a) * (static_cast<double>(k) / (samples - 1))) ? 1 : 0;
     return 2 * in >= samples;
+  };
+  // Walled within `reach` across the move (along its normal).
+  auto tight = [&](std::size_t q) {
+    const Vec2 d = normalized(lp.pts[keep[q]] - lp.pts[keep[q - 1]]), n{-d.y, d.x};
+    return over_half(q, [&](Vec2 p) { return walled(p, n, reach); });
   };
   // Where the room beside the tool (the narrowest chord through its centre, less the
   // diameter) is under four pixels, a heavy cut is a full slot too, from 0.2 mm: the tool
@@ -64,32 +77,12 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // there, so it was not tight). 64 lines, 2.8 degrees apart: at a corner the line that
   // meets it within the margin turns through a few degrees only.
   const double narrow_reach = m.radius_mm + m.wall_stock_mm + 2.0 * m.h;
-  auto narrow_at = [&](Vec2 p) {
-    for (int k = 0; k < 64; ++k) {
-      const double a = kPi * k / 64.0;
-      const Vec2 n{std::cos(a), std::sin(a)};
-      if (!m.walls.inside(p + n * narrow_reach) && !m.walls.inside(p - n * narrow_reach))
-        return true;
-    }
-    return false;
-  };
   auto narrow = [&](std::size_t q) {
-    const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
-    const int samples = std::max(2, static_cast<int>(std::ceil(distance(a, b) / 0.5)) + 1);
-    int in = 0;
-    for (int k = 0; k < samples; ++k)
-      in += narrow_at(a + (b - a) * (static_cast<double>(k) / (samples - 1))) ? 1 : 0;
-    return 2 * in >= samples;
+    return over_half(q, [&](Vec2 p) { return walled_any(p, 64, narrow_reach); });
   };
   // Between walls within reach on two opposite sides, whichever way the line between them
   // runs (every 22.5 degrees): in a channel, whatever the heading of the move there.
-  auto pinched = [&](Vec2 p) {
-    for (int k = 0; k < 8; ++k) {
-      const double a = kPi * k / 8.0;
-      if (walled(p, Vec2{std::cos(a), std::sin(a)})) return true;
-    }
-    return false;
-  };
+  auto pinched = [&](Vec2 p) { return walled_any(p, 8, reach); };
   // Move q (keep[q - 1] -> keep[q]) runs between close walls, with no retract before it.
   auto between_walls = [&](std::size_t q) {
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
