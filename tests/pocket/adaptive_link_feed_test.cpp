@@ -19,11 +19,10 @@ namespace swarf {
 namespace {
 
 using testing::flat_mill;
+using testing::kCheckerPixel;
+using testing::kWallTol;
 using testing::params_3mm_deep;
 using testing::scaled;
-
-constexpr double kCheckerPixel = 0.08;
-constexpr double kWallTol = 0.25;
 
 Pocket load(const std::string& name) {
   return testing::load_test_pocket(name);

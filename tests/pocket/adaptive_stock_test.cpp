@@ -14,10 +14,9 @@
 namespace swarf {
 namespace {
 
-constexpr double kCheckerPixel = 0.08;
-constexpr double kWallTol = 0.25;
-
 using testing::flat_mill;
+using testing::kCheckerPixel;
+using testing::kWallTol;
 using testing::params_3mm_deep;
 
 Pocket l_pocket_60x48() {
