@@ -483,10 +483,13 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   const double sd = params.stepdown_mm > 0.0 ? params.stepdown_mm : total;
   const int layers = std::max(1, static_cast<int>(std::ceil(total / sd - 1e-9)));
   res.layers = layers;
+  // Whether the path's step k is a new entry that goes straight down (no helix or ramp fits).
+  auto straight_entry_at = [&](std::size_t k) {
+    return lp.jump[k] && lp.entry[k] >= 0 && order[static_cast<std::size_t>(lp.entry[k])].solid;
+  };
   res.straight_plunges = e.solid ? 1 : 0;
   for (std::size_t k = 0; k < lp.entry.size(); ++k) {
-    if (lp.jump[k] && lp.entry[k] >= 0 && order[static_cast<std::size_t>(lp.entry[k])].solid)
-      ++res.straight_plunges;
+    if (straight_entry_at(k)) ++res.straight_plunges;
   }
   // The link feed where the re-simulation finds a move removing at most graze_px a step.
   // The chip of a cut of small radial depth ae thins as sqrt(ae / D): at the link feed, k
@@ -532,9 +535,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   // cut heavily): after the first entry's, and after each new entry's.
   if (e.solid && keep.size() > 1) kept[1].out_of_hole = true;
   for (std::size_t q = 1; q + 1 < keep.size(); ++q) {
-    const std::size_t a = keep[q - 1];
-    if (lp.jump[a] && lp.entry[a] >= 0 && order[static_cast<std::size_t>(lp.entry[a])].solid)
-      kept[q + 1].out_of_hole = true;
+    if (straight_entry_at(keep[q - 1])) kept[q + 1].out_of_hole = true;
   }
   // The scallop rides' and dabs' cuts and the tip visits' moves into the tips run at the
   // cutting feed: they take wall slivers a pixel or two thick, which the pixels read as less
