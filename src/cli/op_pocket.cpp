@@ -63,6 +63,7 @@ Result<OperationOutput> run(const OperationInput& in) {
   ap.helix_radius_mm = num(p, "helix_radius");
   ap.plunge_candidates = p.at("plunge_candidates").get<int>();
   ap.straight_plunge = p.at("straight_plunge").get<bool>();
+  ap.channel_plunge = p.at("channel_plunge").get<bool>();
   ap.one_way = p.at("one_way").get<bool>();
   ap.smooth_links = p.at("smooth_links").get<bool>();
   ap.smooth_corners = p.at("smooth_corners").get<bool>();
@@ -111,6 +112,15 @@ Result<OperationOutput> run(const OperationInput& in) {
     out.notes.push_back(std::to_string(r->straight_plunges) +
                         " straight plunge(s) where no helix or ramp fits: the end mill must be "
                         "centre-cutting (--no-straight-plunge leaves that material instead)");
+  }
+  if (r->channels > 0) {
+    out.summary["channels"] = r->channels;
+    out.summary["channel_plunges"] = r->channel_plunges;
+    out.notes.push_back(std::to_string(r->channels) +
+                        " channel(s) a little wider than the tool "
+                        "plunged along a wall in " +
+                        std::to_string(r->channel_plunges) +
+                        " crescent plunges a layer and side-milled");
   }
   if (r->neck_plunges > 0) {
     out.summary["neck_plunges"] = r->neck_plunges;
@@ -210,6 +220,11 @@ const OperationRegistrar kRegistrar(Operation{
                   "centre-cutting end mill), and plunge through necks as wide as the tool "
                   "rather than slot them; off: leave that material (material_left_mm2) and "
                   "slot the necks",
+                  false},
+            Param{"channel_plunge", ParamType::kBool, false,
+                  "where the path would loop along a channel less than two stepovers wider "
+                  "than the tool, plunge along one wall and side-mill the strip left along "
+                  "the other in the band (slower: plunging); off: cut the loops",
                   false},
             Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
             number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),

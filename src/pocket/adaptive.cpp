@@ -581,8 +581,22 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
     for (std::size_t s = keep[necks[i].first - 1]; s < keep[necks[i].last]; ++s)
       res.steps[s].plunged = true;
   }
+  // Channels a little wider than the tool where the path loops: plunged along a wall and
+  // side-milled instead (channel_plunges.cpp).
+  const std::vector<pocket::ChannelRun> channels =
+      params.straight_plunge && params.channel_plunge
+          ? pocket::channel_runs(m, lp, keep, kept, via, necks)
+          : std::vector<pocket::ChannelRun>{};
+  std::vector<NeckRun> replaced = necks;  // the runs whose moves the emission replaces
+  for (const pocket::ChannelRun& c : channels) {
+    ++res.channels;
+    res.channel_plunges += static_cast<int>(c.holes.size());
+    for (std::size_t s = keep[c.first - 1]; s < keep[c.last]; ++s)
+      res.steps[s].plunged = true;
+    replaced.push_back({c.first, c.last, 0.0});
+  }
   const std::vector<FeedMargin> margins =
-      cutting_feed_margins(lp, keep, kept, via, necks, 2.0 * m.h);
+      cutting_feed_margins(lp, keep, kept, via, replaced, 2.0 * m.h);
   int retracts = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const double z = layer == layers ? bottom : params.top_z_mm - sd * layer;
@@ -594,7 +608,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
       tp.moves.push_back(
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
     }
-    std::size_t next_neck = 0;
+    std::size_t next_neck = 0, next_channel = 0;
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
       const Vec3 end = to_vec3(lp.pts[b], z);
@@ -653,6 +667,42 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
               make_move(MoveKind::kFeed, to_vec3(neck[k], z), costs.link_feed_mm_min, false));
         }
         q = n.last;
+        continue;
+      }
+      if (next_channel < channels.size() && channels[next_channel].first == q) {
+        // A channel a little wider than the tool: plunged along one wall, then the strip
+        // left along the other taken by side passes from its end back to its start (between
+        // two, the way back through the cleared channel at the link feed), then the cusps
+        // between the holes by a pass from the start along their wall to the run's end.
+        const pocket::ChannelRun& c = channels[next_channel++];
+        const double z_safe = z_prev + 1.0;
+        auto rapid = [&](Vec2 v, double zz) {
+          tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
+        };
+        auto feed = [&](Vec2 v, bool cutting) {
+          tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(v, z),
+                                       cutting ? params.feed_mm_min : costs.link_feed_mm_min,
+                                       cutting));
+        };
+        rapid(tp.moves.back().end.xy(), z_safe);  // straight up from where the tool is
+        for (std::size_t h = 0; h < c.holes.size(); ++h) {
+          rapid(c.holes[h], z_safe);
+          tp.moves.push_back(make_move(MoveKind::kPlunge, to_vec3(c.holes[h], z),
+                                       params.plunge_feed_mm_min, true));
+          if (h + 1 < c.holes.size()) rapid(c.holes[h], z_safe);
+        }
+        for (std::size_t j = 0; j < c.passes.size(); ++j) {
+          const std::vector<Vec2>& pass = c.passes[j];
+          for (const Vec2& v : pass)
+            feed(v, true);
+          if (j + 1 == c.passes.size()) break;
+          for (std::size_t v = pass.size() - 1; v-- > 0;)
+            feed(pass[v], false);
+        }
+        for (const Vec2& v : c.cusp_pass)
+          feed(v, true);
+        feed(lp.pts[keep[c.last]], true);
+        q = c.last;
         continue;
       }
       const KeptMove& k = kept[q];

@@ -325,6 +325,23 @@ struct NeckPlunge {
   Vec2 at;
 };
 std::vector<NeckPlunge> neck_plunge_points(const std::vector<Vec2>& way, double spacing);
+/// A run of kept moves first..last (as NeckRun) looping along a channel whose room beside
+/// the tool is within one or two band depths (channel_plunges.cpp): replaced by plunges
+/// along one wall's offset, then passes along the channel from its end back to its start,
+/// each taking a strip of the room at the target engagement, on the milling side.
+struct ChannelRun {
+  std::size_t first = 0, last = 0;
+  std::vector<Vec2> holes;                ///< the plunges, in order from the run's start
+  std::vector<std::vector<Vec2>> passes;  ///< in cutting order, each from the run's end back
+  std::vector<Vec2> cusp_pass;            ///< then along the holes' wall from the start, its cusps
+  double room_mm = 0.0;                   ///< the channel's median room beside the tool
+};
+/// Channel runs outside `necks`; `via` are the kept moves' wall-keeping points.
+std::vector<ChannelRun> channel_runs(const Model& model, const LinkedPath& lp,
+                                     const std::vector<std::size_t>& keep,
+                                     const std::vector<KeptMove>& kept,
+                                     const std::vector<std::vector<Vec2>>& via,
+                                     const std::vector<NeckRun>& necks);
 
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
 /// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.

@@ -92,6 +92,13 @@ struct AdaptiveParams {
   /// false: such material is left (material_left_mm2), a pocket with no other way in is an
   /// error, and necks are slotted.
   bool straight_plunge = true;
+  /// Where the path would loop along a channel whose room beside the tool is within one or
+  /// two band depths (the contact of such loops swings from nothing to half the tool),
+  /// plunge along one wall's offset in crescents instead, take the strip left along the
+  /// other wall as a side cut in the band and the cusps between the holes after
+  /// (AdaptiveResult::channel_plunges; needs straight_plunge). Off by default: it holds the
+  /// band better in such channels and climbs, but plunging costs time (docs/pocket.md).
+  bool channel_plunge = false;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
   /// at an angle are taken off by short dabs square to it (or a ride along it); 0 = none.
@@ -166,6 +173,10 @@ struct AdaptiveResult {
   /// through instead (AdaptiveParams::straight_plunge): plunges per layer (their path's
   /// steps are AdaptiveStep::plunged; their length is AdaptiveSummary::plunged_length_mm).
   int neck_plunges = 0;
+  /// Channels plunged along a wall and side-milled (AdaptiveParams::channel_plunge): how
+  /// many, and their plunges per layer (their path's steps are AdaptiveStep::plunged too).
+  int channels = 0;
+  int channel_plunges = 0;
   double gouge_steps = 0;  ///< steps whose disk reaches past a wall (exact geometry; 0 expected)
 };
 
