@@ -205,11 +205,11 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
       continue;
     if (!clear(way)) continue;
     const std::vector<Vec2> stations = resample(way, std::min(0.25, 0.25 * radius));
-    // The room at each station across the way: the side the plunges keep to (a) and the
-    // side of the strip (b), along the normal.
-    // The direction along the channel at a station: over a millimetre either side (the way
-    // turns at its points). Where a side has no wall within 1.5 room_max (where the channel
-    // turns a corner into another, or opens at its ends), the lines keep that far out.
+    // The room at each station across the way, along the normal to the direction along the
+    // channel there (over a millimetre either side: the way turns at its points): the side
+    // the plunges keep to (a) and the side of the strip (b). Where a side has no wall within
+    // 1.5 room_max (where the channel turns a corner into another, or opens at its ends),
+    // the lines keep that far out; at most 30 % of the stations may.
     std::vector<Vec2> side_a, side_b;
     std::vector<double> room;
     const std::size_t reach_k =
@@ -238,9 +238,10 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
     const int passes = median <= hi ? 1 : 2;
     // A strip thinner than the band's depth would be cut below it: the loops are left.
     if (median / passes < lo || median / passes > hi) continue;
-    side_a = kept_off(side_a);
+    // The holes' line, with the points that keep it off a wall's convex corner.
+    const std::vector<Vec2> hole_line = kept_off(side_a);
     std::vector<Vec2> plunge_way{start};
-    plunge_way.insert(plunge_way.end(), side_a.begin(), side_a.end());
+    plunge_way.insert(plunge_way.end(), hole_line.begin(), hole_line.end());
     for (const NeckPlunge& h : neck_plunge_points(plunge_way, 0.75 * radius))
       c.holes.push_back(h.at);
     for (int j = 1; j <= passes; ++j) {
@@ -253,15 +254,15 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
     // convex corner through points pushed off it, and the steps across between them must.
     for (auto& pass : c.passes)
       pass = kept_off(pass);
-    ok = clear(side_a);
-    Vec2 at = side_a.back();
+    ok = clear(hole_line);
+    Vec2 at = hole_line.back();
     for (const auto& pass : c.passes) {
       ok = ok && clear(pass) && clear({at, pass.front()});
       at = pass.front();
     }
-    c.cusp_pass = side_a;
-    ok = ok && clear({c.passes.back().back(), side_a.front()});
-    if (!ok || !clear({side_a.back(), end})) continue;
+    c.cusp_pass = hole_line;
+    ok = ok && clear({c.passes.back().back(), hole_line.front()});
+    if (!ok || !clear({hole_line.back(), end})) continue;
     c.room_mm = median;
     out.push_back(std::move(c));
   }

@@ -402,7 +402,7 @@ bool entry_at(const Model& m, int idx, Entry& e) {
 // entry's ramp runs along one wall's offset: a ramp down its middle leaves two strips each
 // half the room, thinner than the band's depth (a channel 8.8 mm wide, a ø8 at 10 %: two
 // 0.4 mm strips cut at 26 degrees, 37 targeted, 45 % of the cut in the band by the sweep),
-// where one along a wall leaves one strip the whole room thick (77 %). The strip is on the
+// where one along a wall leaves one strip the whole room thick (57 %). The strip is on the
 // milling side of the way back along the ramp. Done on the first entries chosen only: the
 // new-entry search scores candidates by what their ends' disks hold, and moved ramps there
 // changed which it took (random pocket 714: a ramp of 80 legs, +11 s).
