@@ -609,6 +609,11 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
           make_move(MoveKind::kFeed, to_vec3(lp.pts.front(), z), params.feed_mm_min, true));
     }
     std::size_t next_neck = 0, next_channel = 0;
+    // Necks and channels: plunges from z_safe, rapids between them.
+    const double z_safe = z_prev + 1.0;
+    auto rapid = [&](Vec2 v, double zz) {
+      tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
+    };
     for (std::size_t q = 1; q < keep.size(); ++q) {
       const std::size_t a = keep[q - 1], b = keep[q];
       const Vec3 end = to_vec3(lp.pts[b], z);
@@ -644,10 +649,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         const std::vector<Vec2>& neck = neck_way[next_neck];
         const std::vector<pocket::NeckPlunge>& holes = neck_holes[next_neck];
         ++next_neck;
-        const double z_safe = z_prev + 1.0;
-        auto rapid = [&](Vec2 v, double zz) {
-          tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
-        };
         rapid(tp.moves.back().end.xy(), z_safe);  // straight up from where the tool is
         std::size_t v = 0;
         for (const pocket::NeckPlunge& h : holes) {
@@ -675,10 +676,6 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         // two, the way back through the cleared channel at the link feed), then the cusps
         // between the holes by a pass from the start along their wall to the run's end.
         const pocket::ChannelRun& c = channels[next_channel++];
-        const double z_safe = z_prev + 1.0;
-        auto rapid = [&](Vec2 v, double zz) {
-          tp.moves.push_back(make_move(MoveKind::kRapid, to_vec3(v, zz), 0, false));
-        };
         auto feed = [&](Vec2 v, bool cutting) {
           tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(v, z),
                                        cutting ? params.feed_mm_min : costs.link_feed_mm_min,

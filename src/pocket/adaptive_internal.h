@@ -310,6 +310,11 @@ struct KeptMove {
 /// anywhere, and a heavy cut between close walls. The output simplification keeps moves
 /// apart where a step crosses either, so a move's average does not hide them.
 constexpr double kNeckSlotDeg = 160.0, kNeckTightDeg = 110.0;
+/// Walls within `r` of p on both sides along the line through p of direction n (both points
+/// at r outside the pocket).
+bool walled(const WallIndex& walls, Vec2 p, Vec2 n, double r);
+/// walled() along any of `lines` lines through p, evenly spread over 180 degrees.
+bool walled_on_any_line(const WallIndex& walls, Vec2 p, int lines, double r);
 struct NeckRun {
   std::size_t first = 0, last = 0;
   double length_mm = 0.0;

@@ -25,11 +25,6 @@ namespace swarf::pocket {
 
 namespace {
 
-// The radial depth of a straight side cut whose engagement is `deg`.
-double depth_of(double radius, double deg) {
-  return radius * (1.0 - std::cos(deg * kPi / 180.0));
-}
-
 // Resamples the polyline `way` at spacing at most `ds`, ends kept.
 std::vector<Vec2> resample(const std::vector<Vec2>& way, double ds) {
   std::vector<Vec2> out{way.front()};
@@ -54,8 +49,8 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
   const double radius = m.radius_mm;
   const double reach = radius + m.wall_stock_mm;
   // The band's radial depths: a pass whose strip is between them is in the band.
-  const double lo = depth_of(radius, 0.8 * m.target_deg);
-  const double hi = depth_of(radius, std::min(1.2 * m.target_deg, 90.0));
+  const double lo = stepover_for_angle_mm(0.8 * m.target_deg, radius);
+  const double hi = stepover_for_angle_mm(std::min(1.2 * m.target_deg, 90.0), radius);
   // Channels with room for at most two passes in the band (wider ones leave the chooser
   // room for wider loops, and the emission takes at most two passes).
   const double room_max = 2.0 * hi;
@@ -65,15 +60,7 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
       in_neck[q] = true;
   }
   // Walls within room_max beyond the tool on both sides of p, along one of 16 lines.
-  auto thin = [&](Vec2 p) {
-    const double r = reach + room_max;
-    for (int k = 0; k < 16; ++k) {
-      const double a = kPi * k / 16;
-      const Vec2 n{std::cos(a), std::sin(a)};
-      if (!m.walls.inside(p + n * r) && !m.walls.inside(p - n * r)) return true;
-    }
-    return false;
-  };
+  auto thin = [&](Vec2 p) { return walled_on_any_line(m.walls, p, 16, reach + room_max); };
   auto in_channel = [&](std::size_t q) {
     if (lp.jump[keep[q - 1]] || in_neck[q]) return false;
     if (!thin(lp.pts[keep[q]])) return false;

@@ -411,9 +411,8 @@ void ramp_along_a_wall(const Model& m, Entry& e) {
   const double need = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
   const Vec2 d = normalized(e.ramp_b - e.ramp_a);
   const Vec2 n = Vec2{-d.y, d.x} * (m.sigma < 0 ? -1.0 : 1.0);  // towards the wall kept to
-  const double band_depth =
-      m.radius_mm * (1.0 - std::cos(deg_to_rad(std::min(1.2 * m.target_deg, 90.0))));
-  const double room_max = 2.0 * band_depth;
+  const double room_max =
+      2.0 * stepover_for_angle_mm(std::min(1.2 * m.target_deg, 90.0), m.radius_mm);
   auto room_towards = [&](Vec2 side) {
     double lo = 0.0, hi = room_max + m.h;
     if (m.walls.segment_distance(e.ramp_a + side * hi, e.ramp_b + side * hi) >= need) return hi;

@@ -17,6 +17,18 @@
 
 namespace swarf::pocket {
 
+bool walled(const WallIndex& walls, Vec2 p, Vec2 n, double r) {
+  return !walls.inside(p + n * r) && !walls.inside(p - n * r);
+}
+
+bool walled_on_any_line(const WallIndex& walls, Vec2 p, int lines, double r) {
+  for (int k = 0; k < lines; ++k) {
+    const double a = kPi * k / lines;
+    if (walled(walls, p, Vec2{std::cos(a), std::sin(a)}, r)) return true;
+  }
+  return false;
+}
+
 std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
                                const std::vector<std::size_t>& keep,
                                const std::vector<KeptMove>& kept) {
@@ -36,18 +48,6 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // Slot runs this close along the path, pinched between, are one neck (below).
   const double bridge_mm = std::max(1.0, m.radius_mm);
   const double reach = m.radius_mm + m.wall_stock_mm + kTightMarginMm;
-  // Walls within `r` of p on both sides along the line through p of direction n.
-  auto walled = [&](Vec2 p, Vec2 n, double r) {
-    return !m.walls.inside(p + n * r) && !m.walls.inside(p - n * r);
-  };
-  // Walled within `r` along any of `lines` lines through p, evenly spread over 180 degrees.
-  auto walled_any = [&](Vec2 p, int lines, double r) {
-    for (int k = 0; k < lines; ++k) {
-      const double a = kPi * k / lines;
-      if (walled(p, Vec2{std::cos(a), std::sin(a)}, r)) return true;
-    }
-    return false;
-  };
   // Whether at(point) holds over at least half of move q, sampled every half millimetre: a
   // move that runs into a channel from its mouth is tight over the part in it (random
   // pocket 1130: a ø12 cut 7.4 mm of full slot by the sweep along a boundary move that began
@@ -64,7 +64,7 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // Walled within `reach` across the move (along its normal).
   auto tight = [&](std::size_t q) {
     const Vec2 d = normalized(lp.pts[keep[q]] - lp.pts[keep[q - 1]]), n{-d.y, d.x};
-    return over_half(q, [&](Vec2 p) { return walled(p, n, reach); });
+    return over_half(q, [&](Vec2 p) { return walled(m.walls, p, n, reach); });
   };
   // Where the room beside the tool (the narrowest chord through its centre, less the
   // diameter) is under four pixels, a heavy cut is a full slot too, from 0.2 mm: the tool
@@ -78,11 +78,11 @@ std::vector<NeckRun> neck_runs(const Model& m, const LinkedPath& lp,
   // meets it within the margin turns through a few degrees only.
   const double narrow_reach = m.radius_mm + m.wall_stock_mm + 2.0 * m.h;
   auto narrow = [&](std::size_t q) {
-    return over_half(q, [&](Vec2 p) { return walled_any(p, 64, narrow_reach); });
+    return over_half(q, [&](Vec2 p) { return walled_on_any_line(m.walls, p, 64, narrow_reach); });
   };
   // Between walls within reach on two opposite sides, whichever way the line between them
   // runs (every 22.5 degrees): in a channel, whatever the heading of the move there.
-  auto pinched = [&](Vec2 p) { return walled_any(p, 8, reach); };
+  auto pinched = [&](Vec2 p) { return walled_on_any_line(m.walls, p, 8, reach); };
   // Move q (keep[q - 1] -> keep[q]) runs between close walls, with no retract before it.
   auto between_walls = [&](std::size_t q) {
     const Vec2 a = lp.pts[keep[q - 1]], b = lp.pts[keep[q]];
