@@ -15,8 +15,6 @@ namespace {
 
 using testing::expect_correct;
 using testing::flat_mill;
-using testing::kCheckerPixel;
-using testing::kWallTol;
 using testing::Outcome;
 using testing::params_3mm_deep;
 
@@ -26,12 +24,11 @@ Pocket channel() {
   return make_pocket({{0, 0}, {40, 0}, {40, 8.8}, {0, 8.8}}, {}, "channel 8.8 x 40").value();
 }
 
-Outcome generate_swept(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
+// The channel generated with `ap` and swept (the result is kept: its entry and channels).
+Outcome run_channel(const Pocket& p, double tool_d, const AdaptiveParams& ap) {
   auto r = adaptive_pocket(p, flat_mill(tool_d), ap);
   EXPECT_TRUE(r.ok()) << r.status().to_string();
-  Outcome o{r.value(), {}};
-  o.sweep = testing::sweep_check(p.region, 0.5 * tool_d, o.result.toolpath,
-                                 o.result.target_engagement_deg, kCheckerPixel, kWallTol);
+  Outcome o{r.value(), testing::swept(p, tool_d, r.value()).sweep};
   const auto& s = o.sweep;
   std::printf(
       "  %s, channel plunges %s: gouge %.3f mm, residual %.2f mm2, cutting %.0f mm, within20 "
@@ -48,7 +45,7 @@ Outcome generate_swept(const Pocket& p, double tool_d, const AdaptiveParams& ap)
 // it leaves one strip of 0.8 mm: 33.3 % (57 %).
 TEST(AdaptiveChannel, RampKeepsToAWallOfAChannel) {
   const Pocket p = channel();
-  const Outcome o = generate_swept(p, 8.0, params_3mm_deep(0.8));
+  const Outcome o = run_channel(p, 8.0, params_3mm_deep(0.8));
   expect_correct(p, o, -1.0);
   const auto& mv = o.result.toolpath.moves;
   bool ramp = false;
@@ -75,8 +72,8 @@ TEST(AdaptiveChannel, ChannelPlungesSideMillTheStripInTheBand) {
     AdaptiveParams off = params_3mm_deep(stepover);
     AdaptiveParams on = off;
     on.channel_plunge = true;
-    const Outcome loops = generate_swept(p, 8.0, off);
-    const Outcome plunged = generate_swept(p, 8.0, on);
+    const Outcome loops = run_channel(p, 8.0, off);
+    const Outcome plunged = run_channel(p, 8.0, on);
     expect_correct(p, plunged, -1.0);
     EXPECT_EQ(loops.result.channels, 0);
     EXPECT_GE(plunged.result.channels, 1);
