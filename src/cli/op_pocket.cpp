@@ -221,10 +221,11 @@ const OperationRegistrar kRegistrar(Operation{
                   "rather than slot them; off: leave that material (material_left_mm2) and "
                   "slot the necks",
                   false},
-            Param{"channel_plunge", ParamType::kBool, false,
+            Param{"channel_plunge", ParamType::kBool, true,
                   "where the path would loop along a channel less than two stepovers wider "
                   "than the tool, plunge along one wall and side-mill the strip left along "
-                  "the other in the band (slower: plunging); off: cut the loops",
+                  "the other in the band, where that is no slower than the loops; off: cut "
+                  "the loops",
                   false},
             Param{"smoothing", ParamType::kInteger, 2, "Chaikin passes over link joins", false},
             number_param("simplify_tolerance", 0.0, "output simplification, mm (0 = pixel / 4)"),

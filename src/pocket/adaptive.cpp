@@ -101,6 +101,21 @@ bool gouges_exactly(const Model& m, Vec2 c) {
   return !m.walls.inside(c) || m.walls.distance(c) < reach - 1e-6;
 }
 
+// The stock a re-simulation of lp starts from: what the free pixel centres reach, and what
+// lp's points beyond them (tip visits, scallop rides' dabs) reach.
+pocket::PixelStock starting_stock(const Model& m, const LinkedPath& lp) {
+  pocket::BitImage material = m.material;
+  if (!lp.beyond_free.empty()) {
+    pocket::PixelStock whole(m.grid, m.pocket, m.forbidden, m.radius_mm, &m.clearance_sq);
+    const pocket::CutVisitor add = [](void* u, int i, int j) {
+      static_cast<pocket::BitImage*>(u)->set(i, j, true);
+    };
+    for (const Vec2& v : lp.beyond_free)
+      whole.stamp(v, add, &material);
+  }
+  return pocket::PixelStock(m.grid, material, m.forbidden, m.radius_mm, &m.clearance_sq);
+}
+
 // Re-simulation of the final path on a fresh stock (seed 000 6.6): engagement per step,
 // gouges, the cut map, the material left.
 void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedPath& lp,
@@ -117,16 +132,7 @@ void resimulate(const Model& m, const std::vector<Entry>& entries, const LinkedP
   // free centres too) added the pixels between a pass's sampled disks, which later links
   // along the wall then read as cut, at the cutting feed: +1-4 % of machining time on the
   // benchmark pockets for no change in what the sweep sees links remove.
-  pocket::BitImage material = m.material;
-  if (!lp.beyond_free.empty()) {
-    pocket::PixelStock whole(m.grid, m.pocket, m.forbidden, m.radius_mm, &m.clearance_sq);
-    const pocket::CutVisitor add = [](void* u, int i, int j) {
-      static_cast<pocket::BitImage*>(u)->set(i, j, true);
-    };
-    for (const Vec2& v : lp.beyond_free)
-      whole.stamp(v, add, &material);
-  }
-  pocket::PixelStock stock(m.grid, material, m.forbidden, m.radius_mm, &m.clearance_sq);
+  pocket::PixelStock stock = starting_stock(m, lp);
   // The cut map, when asked for (AdaptiveParams::cut_map): without it the cuts tag nothing.
   CutMap& map = res.cut_map;
   map = CutMap{};
@@ -427,7 +433,7 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   std::optional<pocket::PixelStock> after;
   resimulate(m, order, lp, params.cut_map, res, &after);
   if (pocket::ride_walls_over_scallops(m, *after, params.wall_scallop_mm, lp))
-    resimulate(m, order, lp, params.cut_map, res);
+    resimulate(m, order, lp, params.cut_map, res, &after);
 
   // Output simplification: runs between kind changes and jumps, Douglas-Peucker. A chord may
   // pass up to the tolerance inside the curve it replaces, i.e. towards an island the path
@@ -583,10 +589,25 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
   }
   // Channels a little wider than the tool where the path loops: plunged along a wall and
   // side-milled instead (channel_plunges.cpp).
-  const std::vector<pocket::ChannelRun> channels =
-      params.straight_plunge && params.channel_plunge
-          ? pocket::channel_runs(m, lp, keep, kept, via, necks)
-          : std::vector<pocket::ChannelRun>{};
+  // Each where that is no slower at the feeds than its loops (plunging a small tool deep at
+  // the plunge feed can cost more than the loops do: random pocket 715, ø4 6 mm deep), and
+  // leaves nothing the loops took (random pocket 2440, ø20: a run whose loops went round
+  // into the corridor at the channel's end, 1.4 mm^2 there left by the sweep).
+  std::vector<pocket::ChannelRun> channels;
+  if (params.straight_plunge && params.channel_plunge) {
+    const pocket::ChannelFeeds feeds{params.feed_mm_min, costs.link_feed_mm_min,
+                                     params.plunge_feed_mm_min, params.rapid_mm_min,
+                                     std::min(sd, total) + 1.0};
+    std::vector<pocket::ChannelRun> faster;
+    for (pocket::ChannelRun& c : pocket::channel_runs(m, lp, keep, kept, via, necks)) {
+      const Vec2 from = lp.pts[keep[c.first - 1]], to = lp.pts[keep[c.last]];
+      if (pocket::channel_plunges_time_s(c, from, to, feeds) <=
+          pocket::channel_loops_time_s(c, kept, feeds))
+        faster.push_back(std::move(c));
+    }
+    channels = pocket::runs_leaving_nothing(m, starting_stock(m, lp), order, lp, keep,
+                                            std::move(faster), after->material());
+  }
   std::vector<NeckRun> replaced = necks;  // the runs whose moves the emission replaces
   for (const pocket::ChannelRun& c : channels) {
     ++res.channels;

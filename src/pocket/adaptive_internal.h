@@ -348,6 +348,29 @@ std::vector<ChannelRun> channel_runs(const Model& model, const LinkedPath& lp,
                                      const std::vector<std::vector<Vec2>>& via,
                                      const std::vector<NeckRun>& necks);
 
+/// The feeds a channel run's time is reckoned at (mm/min), and how deep its plunges go (mm).
+struct ChannelFeeds {
+  double feed = 0.0, link = 0.0, plunge = 0.0, rapid = 0.0, dive_mm = 0.0;
+};
+/// Seconds at the feeds for run c's loops (the kept moves it replaces).
+double channel_loops_time_s(const ChannelRun& c, const std::vector<KeptMove>& kept,
+                            const ChannelFeeds& f);
+/// Seconds at the feeds for what replaces run c, from `from` (where the run starts) to `to`
+/// (where it ends): the plunges and rapids between them, the passes, the cusp pass.
+double channel_plunges_time_s(const ChannelRun& c, Vec2 from, Vec2 to, const ChannelFeeds& f);
+
+/// The runs (in path order) whose replacement leaves no more than crumbs of material that
+/// the path cut: lp simulated on `stock` (the re-simulation's starting stock) with every run
+/// replaced, and a run dropped where over 0.1 mm^2 that was cut before (not set in
+/// `left_before`, the re-simulation's stock after the path) is left within reach of its
+/// loops.
+std::vector<ChannelRun> runs_leaving_nothing(const Model& model, PixelStock stock,
+                                             const std::vector<Entry>& entries,
+                                             const LinkedPath& lp,
+                                             const std::vector<std::size_t>& keep,
+                                             std::vector<ChannelRun> runs,
+                                             const BitImage& left_before);
+
 /// Ramer-Douglas-Peucker on [first, last]: indices kept, ends included. With `chord_ok`, a
 /// chord (a, b) within the tolerance is also kept only when chord_ok(a, b) says it may be.
 void simplify_indices(const std::vector<Vec2>& pts, std::size_t first, std::size_t last, double tol,

@@ -14,8 +14,10 @@
 // which one pass (two where the room is over the band's depth) takes as a side cut, at the
 // target engagement when the room is within the band's radial depths, on the milling side
 // (climb by default). A last pass along the holes' wall takes the cusps between them, below
-// the band. Opt-in (AdaptiveParams::channel_plunge): plunging at the plunge feed costs more
-// time than the loops on small tools (docs/pocket.md, How it works 7).
+// the band. AdaptiveParams::channel_plunge, on by default; adaptive.cpp replaces a run only
+// where that is no slower at the feeds than its loops (channel_plunges_time_s against
+// channel_loops_time_s): a small tool plunging deep at the plunge feed is slower (random
+// pocket 715, ø4 6 mm deep; docs/pocket.md, How it works 7).
 #include <algorithm>
 #include <cmath>
 
@@ -223,8 +225,17 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
     std::sort(room.begin(), room.end());
     const double median = room[room.size() / 2];
     const int passes = median <= hi ? 1 : 2;
-    // A strip thinner than the band's depth would be cut below it: the loops are left.
+    // A strip thinner than the band's depth would be cut below it: the loops are left. So
+    // are they where the room is over two target depths or a quarter of the tool's radius:
+    // there the loops are wide enough to keep most of their cut in the band, and the cusp
+    // pass, below it, cost more of the band than the loops did. Drawn random pockets, ø10 to
+    // ø20, by the sweep: with 0.36-0.8 R of room 3022 91.0 -> 87.7 %, 3023 95.3 -> 94.4,
+    // 3036 95.6 -> 95.2, 3101 94.3 -> 93.3, 3116 81.3 -> 77.4, each for 0-5 s; with
+    // 0.2-0.24 R 3044 96.2 -> 97.0 (-11 s) and 3108 94.6 -> 94.7, and the test channels
+    // (0.2 R) gain 7-12 points (docs/pocket.md, How it works 7).
     if (median / passes < lo || median / passes > hi) continue;
+    if (median > std::min(2.0 * stepover_for_angle_mm(m.target_deg, radius), 0.25 * radius) + 1e-9)
+      continue;
     // The holes' line, with the points that keep it off a wall's convex corner.
     const std::vector<Vec2> hole_line = kept_off(side_a);
     std::vector<Vec2> plunge_way{start};
@@ -252,6 +263,117 @@ std::vector<ChannelRun> channel_runs(const Model& m, const LinkedPath& lp,
     if (!ok || !clear({hole_line.back(), end})) continue;
     c.room_mm = median;
     out.push_back(std::move(c));
+  }
+  return out;
+}
+
+double channel_loops_time_s(const ChannelRun& c, const std::vector<KeptMove>& kept,
+                            const ChannelFeeds& f) {
+  double min = 0.0;
+  for (std::size_t r = c.first; r <= c.last; ++r)
+    min += kept[r].len / (kept[r].fast ? f.link : f.feed);
+  return 60.0 * min;
+}
+
+double channel_plunges_time_s(const ChannelRun& c, Vec2 from, Vec2 to, const ChannelFeeds& f) {
+  // Up from the floor, then to each hole, down at the plunge feed and up again.
+  double min = f.dive_mm / f.rapid;
+  Vec2 at = from;
+  for (const Vec2& h : c.holes) {
+    min += distance(at, h) / f.rapid + f.dive_mm / f.plunge + f.dive_mm / f.rapid;
+    at = h;
+  }
+  min -= c.holes.empty() ? 0.0 : f.dive_mm / f.rapid;  // the last hole's tool stays down
+  auto along = [&](const std::vector<Vec2>& line, double feed) {
+    for (const Vec2& v : line) {
+      min += distance(at, v) / feed;
+      at = v;
+    }
+  };
+  for (std::size_t j = 0; j < c.passes.size(); ++j) {
+    along(c.passes[j], f.feed);
+    if (j + 1 < c.passes.size())
+      along(std::vector<Vec2>(c.passes[j].rbegin(), c.passes[j].rend()), f.link);
+  }
+  along(c.cusp_pass, f.feed);
+  along({to}, f.feed);
+  return 60.0 * min;
+}
+
+std::vector<ChannelRun> runs_leaving_nothing(const Model& m, PixelStock stock,
+                                             const std::vector<Entry>& entries,
+                                             const LinkedPath& lp,
+                                             const std::vector<std::size_t>& keep,
+                                             std::vector<ChannelRun> runs,
+                                             const BitImage& left_before) {
+  if (runs.empty()) return runs;
+  // The path as the emission writes it, cut as the re-simulation cuts (resimulate in
+  // adaptive.cpp): straight moves in steps of at most the step length.
+  Vec2 at = lp.pts.front();
+  auto feed_to = [&](Vec2 to) {
+    const int n = std::max(1, static_cast<int>(std::ceil(distance(at, to) / m.step_mm - 1e-9)));
+    for (int s = 1; s <= n; ++s) {
+      const Vec2 q = at + (to - at) * (static_cast<double>(s) / n);
+      stock.cut(at, q);
+      at = q;
+    }
+  };
+  cut_entry(stock, m, entries.front());
+  std::size_t next = 0;
+  for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
+    if (next < runs.size() && k == keep[runs[next].first - 1]) {
+      // The run: its plunges, its passes (the way back between two), the cusp pass, on to
+      // where the loops ended.
+      const ChannelRun& c = runs[next++];
+      for (const Vec2& h : c.holes)
+        stock.stamp(h);
+      at = c.holes.empty() ? at : c.holes.back();
+      for (std::size_t j = 0; j < c.passes.size(); ++j) {
+        for (const Vec2& v : c.passes[j])
+          feed_to(v);
+        if (j + 1 == c.passes.size()) break;
+        for (std::size_t v = c.passes[j].size() - 1; v-- > 0;)
+          feed_to(c.passes[j][v]);
+      }
+      for (const Vec2& v : c.cusp_pass)
+        feed_to(v);
+      feed_to(lp.pts[keep[c.last]]);
+      k = keep[c.last] - 1;
+      continue;
+    }
+    const Vec2 b = lp.pts[k + 1];
+    if (lp.jump[k] && lp.entry[k] >= 0) {
+      cut_entry(stock, m, entries[static_cast<std::size_t>(lp.entry[k])]);
+      at = b;
+    } else if (lp.jump[k]) {
+      stock.stamp(b);
+      at = b;
+    } else {
+      at = lp.pts[k];
+      feed_to(b);
+    }
+  }
+  // What is left now that the path cut, each pixel put down to the runs whose loops reach it.
+  std::vector<Vec2> newly_left;
+  const BitImage& now = stock.material();
+  for (int j = 0; j < now.height(); ++j) {
+    for (int i = 0; i < now.width(); ++i)
+      if (now.get(i, j) && !left_before.get(i, j)) newly_left.push_back(m.grid.to_world(i, j));
+  }
+  const double reach = m.radius_mm + 2.0 * m.h;
+  const int most = static_cast<int>(0.1 / (m.h * m.h));
+  std::vector<ChannelRun> out;
+  for (ChannelRun& c : runs) {
+    int left = 0;
+    for (const Vec2& q : newly_left) {
+      for (std::size_t s = keep[c.first - 1]; s <= keep[c.last]; ++s) {
+        if (distance(q, lp.pts[s]) <= reach) {
+          ++left;
+          break;
+        }
+      }
+    }
+    if (left <= most) out.push_back(std::move(c));
   }
   return out;
 }

@@ -424,11 +424,42 @@ void ramp_along_a_wall(const Model& m, Entry& e) {
     return lo;
   };
   const double to_wall = room_towards(n), away = room_towards(n * -1.0);
-  if (to_wall > 0.0 && to_wall + away <= room_max) {
-    e.ramp_a = e.ramp_a + n * to_wall;
-    e.ramp_b = e.ramp_b + n * to_wall;
-    e.start = e.ramp_b;
-  }
+  if (!(to_wall > 0.0 && to_wall + away <= room_max)) return;
+  e.ramp_a = e.ramp_a + n * to_wall;
+  e.ramp_b = e.ramp_b + n * to_wall;
+  e.start = e.ramp_b;
+  // Then, where that strip is deep enough to be cut in the band, the ramp runs on along the
+  // wall for as long as the channel lasts (the tool keeps to that wall's offset and the other
+  // wall stays within the room), not the 4 R either way of a ramp elsewhere: its closing
+  // pass at the floor leaves the one strip along the whole channel, which the moves cut in
+  // the band, where the channel beyond a short ramp was cut by the chooser's tight loops
+  // wall to wall. A thinner strip is cut below the band whatever the way: there the loops'
+  // crescents keep more of the cut in it.
+  if (to_wall + away < stepover_for_angle_mm(0.8 * m.target_deg, m.radius_mm)) return;
+  auto in_channel = [&](Vec2 q) {
+    return m.walls.distance(q + n * m.h) < need &&
+           m.walls.distance(q - n * (room_max + m.h)) < need;
+  };
+  auto run_on = [&](Vec2 fixed, Vec2 end) {
+    const Vec2 dir = normalized(end - fixed);
+    for (;;) {
+      const Vec2 next = end + dir * m.h;
+      if (m.walls.segment_distance(fixed, next) < need) {
+        // The channel's end: on to the wall's offset there, by bisection.
+        double lo = 0.0, hi = m.h;
+        while (hi - lo > 1e-3) {
+          const double mid = 0.5 * (lo + hi);
+          (m.walls.segment_distance(fixed, end + dir * mid) >= need ? lo : hi) = mid;
+        }
+        return end + dir * lo;
+      }
+      if (!in_channel(next)) return end;
+      end = next;
+    }
+  };
+  e.ramp_b = run_on(e.ramp_a, e.ramp_b);
+  e.ramp_a = run_on(e.ramp_b, e.ramp_a);
+  e.start = e.ramp_b;
 }
 
 // A chosen ramp's ends that stopped at a wall lie up to about a pixel short of the exact

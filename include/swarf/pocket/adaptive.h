@@ -96,9 +96,10 @@ struct AdaptiveParams {
   /// two band depths (the contact of such loops swings from nothing to half the tool),
   /// plunge along one wall's offset in crescents instead, take the strip left along the
   /// other wall as a side cut in the band and the cusps between the holes after
-  /// (AdaptiveResult::channel_plunges; needs straight_plunge). Off by default: it holds the
-  /// band better in such channels and climbs, but plunging costs time (docs/pocket.md).
-  bool channel_plunge = false;
+  /// (AdaptiveResult::channel_plunges; needs straight_plunge). Each such run is replaced
+  /// only where that is no slower at the feeds than its loops (a small tool plunging deep
+  /// at the plunge feed is slower).
+  bool channel_plunge = true;
   int smoothing_iterations = 2;  ///< Chaikin passes over link joins (seed 000 6.6)
   /// Scallops higher than this, mm, that the passes leave where they meet a wall or island
   /// at an angle are taken off by short dabs square to it (or a ride along it); 0 = none.
