@@ -398,6 +398,18 @@ bool entry_at(const Model& m, int idx, Entry& e) {
   return true;
 }
 
+// The end of the line from `fixed` through `end`, pushed on along it by at most `span` as
+// far as the whole line keeps `need` off the exact walls (bisection to 1 um).
+Vec2 pushed_to_wall(const Model& m, Vec2 fixed, Vec2 end, double span, double need) {
+  const Vec2 d = normalized(end - fixed);
+  double lo = 0.0, hi = span;
+  while (hi - lo > 1e-3) {
+    const double mid = 0.5 * (lo + hi);
+    (m.walls.segment_distance(fixed, end + d * mid) >= need ? lo : hi) = mid;
+  }
+  return end + d * lo;
+}
+
 // In a channel with room for one or two band-deep strips beside a ramp's slot, the first
 // entry's ramp runs along one wall's offset: a ramp down its middle leaves two strips each
 // half the room, thinner than the band's depth (a channel 8.8 mm wide, a ø8 at 10 %: two
@@ -444,15 +456,9 @@ void ramp_along_a_wall(const Model& m, Entry& e) {
     const Vec2 dir = normalized(end - fixed);
     for (;;) {
       const Vec2 next = end + dir * m.h;
-      if (m.walls.segment_distance(fixed, next) < need) {
-        // The channel's end: on to the wall's offset there, by bisection.
-        double lo = 0.0, hi = m.h;
-        while (hi - lo > 1e-3) {
-          const double mid = 0.5 * (lo + hi);
-          (m.walls.segment_distance(fixed, end + dir * mid) >= need ? lo : hi) = mid;
-        }
-        return end + dir * lo;
-      }
+      // The channel's end: on to the offset of the wall there.
+      if (m.walls.segment_distance(fixed, next) < need)
+        return pushed_to_wall(m, fixed, end, m.h, need);
       if (!in_channel(next)) return end;
       end = next;
     }
@@ -476,13 +482,7 @@ void reach_walls(const Model& m, Entry& e) {
   const double need = m.radius_mm + m.wall_stock_mm + kWallClearanceMm;
   auto reach = [&](Vec2 fixed, Vec2 end) {
     if (distance(e.centre, end) >= 4.0 * m.radius_mm - 1e-9) return end;
-    const Vec2 d = (end - fixed) * (1.0 / distance(fixed, end));
-    double lo = 0.0, hi = 2.0 * m.h;
-    while (hi - lo > 1e-3) {
-      const double mid = 0.5 * (lo + hi);
-      (m.walls.segment_distance(fixed, end + d * mid) >= need ? lo : hi) = mid;
-    }
-    return end + d * lo;
+    return pushed_to_wall(m, fixed, end, 2.0 * m.h, need);
   };
   e.ramp_b = reach(e.ramp_a, e.ramp_b);
   e.ramp_a = reach(e.ramp_b, e.ramp_a);
