@@ -178,6 +178,35 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
   // Whether the move into chain[k] removes material: asked once each (a point asks of the
   // moves either side, its neighbour of one of the same).
   std::vector<std::int8_t> removes(n, -1);
+  // Whether the tool's disk at `cand`, grown by two pixels, holds material that is nearer
+  // `cand` than `point`: what a lift from `point` to `cand` brings the link nearer to, such
+  // as the front the next pass is to take. Material on the wall's side of the lift, the
+  // scallops and skin the passes left there, only gets farther. Until session 63 any
+  // material in the grown disk kept the point on the wall's offset, so beside the scallops
+  // along a wall the link rode them at the cutting feed (random pocket 3001, ø10 at 40 %:
+  // 82.8 -> 83.8 % within +-20 %).
+  const double grown = m.radius_mm + 2.0 * m.h;
+  const BitImage& material = stock.material();
+  const auto meets_nearer_material = [&](Vec2 cand, Vec2 point) {
+    if (stock.material_in_disk(cand, grown, 0) == 0) return false;
+    // Pixel centres q nearer cand than point: dot(q - mid, u) > 0, u = cand - point.
+    const Vec2 mid = m.grid.to_px(0.5 * (cand + point));
+    const Vec2 u = cand - point;
+    bool found = false;
+    for_disk_rows(m.grid, cand, grown, [&](int j, int i0, int i1) {
+      if (found) return;
+      const double rest = (j - mid.y) * u.y;  // dot's part from the row
+      if (std::abs(u.x) < 1e-12) {
+        found = rest > 0.0 && material.count(j, i0, i1) > 0;
+        return;
+      }
+      const double x = mid.x - rest / u.x;  // where the dot is 0 on this row
+      if (u.x > 0.0) i0 = std::max(i0, static_cast<int>(std::floor(x)) + 1);
+      if (u.x < 0.0) i1 = std::min(i1, static_cast<int>(std::ceil(x)) - 1);
+      found = i0 <= i1 && material.count(j, i0, i1) > 0;
+    });
+    return found;
+  };
   const auto removes_into = [&](std::size_t k) {
     if (removes[k] < 0)
       removes[k] = stock.probe(k == 0 ? from : chain[k - 1], chain[k], 0) != 0 ? 1 : 0;
@@ -199,8 +228,7 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
     double to_d = full;
     for (int t = 0; t < 3; ++t, to_d = d[k] + 0.5 * (to_d - d[k])) {
       const Vec2 cand = foot[k] + unit * to_d;
-      if (m.walls.distance(cand) >= to_d - 1e-9 &&
-          stock.material_in_disk(cand, m.radius_mm + 2.0 * m.h, 0) == 0) {
+      if (m.walls.distance(cand) >= to_d - 1e-9 && !meets_nearer_material(cand, chain[k])) {
         want[k] = to_d;
         break;
       }
@@ -235,8 +263,7 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
       if (m.walls.distance(cand) >= to_d - 1e-9 &&
           m.walls.segment_distance(at, cand) >=
               std::min(reach + kWallClearanceMm, m.walls.distance(at)) - 1e-9 &&
-          stock.material_in_disk(cand, m.radius_mm + 2.0 * m.h, 0) == 0 &&
-          stock.probe(at, cand, 0) == 0)
+          !meets_nearer_material(cand, chain[k]) && stock.probe(at, cand, 0) == 0)
         to = cand;
     }
     stock.cut(at, to);

@@ -361,5 +361,18 @@ TEST(AdaptivePocket, LinksLiftOffAWallFromPointsOnItsOffset) {
                     0.935);
 }
 
+// Random pocket 3001 (ø10 at 40 %: a 115.9 x 66.4 mm rectangle with two square islands and
+// a round one, drawn to overlap each other and the wall), swept at the bench's pixel. Its
+// fronts meet the walls at an angle and leave scallops between their arrivals. A link's
+// point on a wall's offset was lifted only where the tool's disk there, grown by two
+// pixels, held no material at all, and beside those scallops it always did: the links back
+// along the walls rode them at the cutting feed, 41.9 mm of cut at 2-10 degrees by the
+// sweep and 82.8 % within +-20 %, until session 63. A lift is now refused only for material
+// that the lifted disk comes nearer to: 28.1 mm, 83.8 %.
+TEST(AdaptivePocket, LinksLiftOffTheScallopsTheyRunBeside) {
+  expect_walls_kept(wall_grazes(load("random_seed3001.json"), 10.0, 4.0, 0.05, kWallTol), 0.005,
+                    0.02, 0.835);
+}
+
 }  // namespace
 }  // namespace swarf
