@@ -200,7 +200,9 @@ void apply_lifted(const Model& m, PixelStock& stock, Vec2 from, const std::vecto
         found = rest > 0.0 && material.count(j, i0, i1) > 0;
         return;
       }
-      const double x = mid.x - rest / u.x;  // where the dot is 0 on this row
+      // Where the dot is 0 on this row, kept within the span (a nearly vertical u puts it
+      // far beyond any int).
+      const double x = std::clamp(mid.x - rest / u.x, i0 - 1.0, i1 + 1.0);
       if (u.x > 0.0) i0 = std::max(i0, static_cast<int>(std::floor(x)) + 1);
       if (u.x < 0.0) i1 = std::min(i1, static_cast<int>(std::ceil(x)) - 1);
       found = i0 <= i1 && material.count(j, i0, i1) > 0;
