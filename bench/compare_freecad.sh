@@ -5,10 +5,12 @@
 # (bench/pocket_sweep.cpp = tests/pocket/sweep_checker.cpp at 0.05 mm, or a twentieth of the
 # stepover where finer). Prints one table; times at the feeds and on a machine of 1000 mm/s^2
 # and 0.01 mm junction deviation (the sweep's defaults: it takes --accel, --junction-deviation).
-#   bench/compare_freecad.sh [build-dir]     (default build/release)
+#   bench/compare_freecad.sh [build-dir] [stepover-fraction]
+#     (defaults build/release and 0.1: the radial stepover as a fraction of the diameter)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/release}
+frac=${2:-0.1}
 source bench/pocket_common.sh
 need_freecad
 bench_shapes "$tmp"
@@ -25,13 +27,13 @@ row() {  # name generator cpu sweep-line
 }
 for spec in "${bench_pockets[@]}"; do
   IFS="|" read -r name file d <<<"$spec"
-  so=$(awk -v d="$d" 'BEGIN { print 0.1 * d }')
+  so=$(awk -v d="$d" -v f="$frac" 'BEGIN { print f * d }')
   target=$(target_deg "$d" "$so")
   t=$(cpu "$swarf" pocket "$file" --tool "flat:$d" --stepover "$so" --depth 6 -o "$tmp/s.nc")
   row "$name" "Swarf adaptive" "$t" "$("$sweep" "$file" "$d" "$target" "$tmp/s.nc")"
   for fp in on off; do
     flag=""; [ $fp = off ] && flag=--no-finishing-profile
-    line=$(python3 bench/freecad_adaptive.py "$file" "$d" 0.1 "$tmp/f.nc" $flag)
+    line=$(python3 bench/freecad_adaptive.py "$file" "$d" "$frac" "$tmp/f.nc" $flag)
     t=$(echo "$line" | sed -E 's/.*cpu ([0-9.]+) s.*/\1/')
     row "$name" "FreeCAD Adaptive2d, finishing profile $fp" "$t" "$("$sweep" "$file" "$d" "$target" "$tmp/f.nc")"
   done
