@@ -697,29 +697,22 @@ Result<AdaptiveResult> adaptive_pocket(const Pocket& pocket, const Tool& tool,
         // two, the way back through the cleared channel at the link feed), then the cusps
         // between the holes by a pass from the start along their wall to the run's end.
         const pocket::ChannelRun& c = channels[next_channel++];
-        auto feed = [&](Vec2 v, bool cutting) {
-          tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(v, z),
-                                       cutting ? params.feed_mm_min : costs.link_feed_mm_min,
-                                       cutting));
-        };
         rapid(tp.moves.back().end.xy(), z_safe);  // straight up from where the tool is
-        for (std::size_t h = 0; h < c.holes.size(); ++h) {
-          rapid(c.holes[h], z_safe);
-          tp.moves.push_back(make_move(MoveKind::kPlunge, to_vec3(c.holes[h], z),
-                                       params.plunge_feed_mm_min, true));
-          if (h + 1 < c.holes.size()) rapid(c.holes[h], z_safe);
+        std::optional<Vec2> hole;                 // the hole the tool is down in
+        for (const pocket::ChannelStep& s : pocket::channel_steps(c, lp.pts[keep[c.last]])) {
+          if (s.kind == pocket::ChannelStep::Kind::kPlunge) {
+            if (hole) rapid(*hole, z_safe);
+            rapid(s.to, z_safe);
+            tp.moves.push_back(
+                make_move(MoveKind::kPlunge, to_vec3(s.to, z), params.plunge_feed_mm_min, true));
+            hole = s.to;
+          } else {
+            const bool cutting = s.kind == pocket::ChannelStep::Kind::kCut;
+            tp.moves.push_back(make_move(MoveKind::kFeed, to_vec3(s.to, z),
+                                         cutting ? params.feed_mm_min : costs.link_feed_mm_min,
+                                         cutting));
+          }
         }
-        for (std::size_t j = 0; j < c.passes.size(); ++j) {
-          const std::vector<Vec2>& pass = c.passes[j];
-          for (const Vec2& v : pass)
-            feed(v, true);
-          if (j + 1 == c.passes.size()) break;
-          for (std::size_t v = pass.size() - 1; v-- > 0;)
-            feed(pass[v], false);
-        }
-        for (const Vec2& v : c.cusp_pass)
-          feed(v, true);
-        feed(lp.pts[keep[c.last]], true);
         q = c.last;
         continue;
       }

@@ -348,6 +348,19 @@ std::vector<ChannelRun> channel_runs(const Model& model, const LinkedPath& lp,
                                      const std::vector<std::vector<Vec2>>& via,
                                      const std::vector<NeckRun>& necks);
 
+/// One step of what replaces a channel run: a plunge at a hole (from above the layer), a
+/// cutting move, or a move back through the cleared channel at the link feed.
+struct ChannelStep {
+  enum class Kind { kPlunge, kCut, kLink };
+  Kind kind = Kind::kCut;
+  Vec2 to;
+};
+/// What replaces run c, in order, ending at `end` (where its loops ended): the plunges, the
+/// passes from the run's end back to its start (between two, the way back at the link
+/// feed), the cusp pass. The emission writes it, its time is reckoned from it and the check
+/// that it leaves nothing cuts it.
+std::vector<ChannelStep> channel_steps(const ChannelRun& c, Vec2 end);
+
 /// The feeds a channel run's time is reckoned at (mm/min), and how deep its plunges go (mm).
 struct ChannelFeeds {
   double feed = 0.0, link = 0.0, plunge = 0.0, rapid = 0.0, dive_mm = 0.0;

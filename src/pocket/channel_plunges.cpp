@@ -275,28 +275,41 @@ double channel_loops_time_s(const ChannelRun& c, const std::vector<KeptMove>& ke
   return 60.0 * min;
 }
 
+std::vector<ChannelStep> channel_steps(const ChannelRun& c, Vec2 end) {
+  using Kind = ChannelStep::Kind;
+  std::vector<ChannelStep> out;
+  for (const Vec2& h : c.holes)
+    out.push_back({Kind::kPlunge, h});
+  for (std::size_t j = 0; j < c.passes.size(); ++j) {
+    const std::vector<Vec2>& pass = c.passes[j];
+    for (const Vec2& v : pass)
+      out.push_back({Kind::kCut, v});
+    if (j + 1 == c.passes.size()) break;
+    for (std::size_t v = pass.size() - 1; v-- > 0;)
+      out.push_back({Kind::kLink, pass[v]});
+  }
+  for (const Vec2& v : c.cusp_pass)
+    out.push_back({Kind::kCut, v});
+  out.push_back({Kind::kCut, end});
+  return out;
+}
+
 double channel_plunges_time_s(const ChannelRun& c, Vec2 from, Vec2 to, const ChannelFeeds& f) {
-  // Up from the floor, then to each hole, down at the plunge feed and up again.
+  // Up from the floor, then to each hole, down at the plunge feed, and up again before the
+  // next (the last hole's tool stays down).
   double min = f.dive_mm / f.rapid;
   Vec2 at = from;
-  for (const Vec2& h : c.holes) {
-    min += distance(at, h) / f.rapid + f.dive_mm / f.plunge + f.dive_mm / f.rapid;
-    at = h;
-  }
-  min -= c.holes.empty() ? 0.0 : f.dive_mm / f.rapid;  // the last hole's tool stays down
-  auto along = [&](const std::vector<Vec2>& line, double feed) {
-    for (const Vec2& v : line) {
-      min += distance(at, v) / feed;
-      at = v;
+  bool in_hole = false;
+  for (const ChannelStep& s : channel_steps(c, to)) {
+    if (s.kind == ChannelStep::Kind::kPlunge) {
+      if (in_hole) min += f.dive_mm / f.rapid;
+      min += distance(at, s.to) / f.rapid + f.dive_mm / f.plunge;
+      in_hole = true;
+    } else {
+      min += distance(at, s.to) / (s.kind == ChannelStep::Kind::kCut ? f.feed : f.link);
     }
-  };
-  for (std::size_t j = 0; j < c.passes.size(); ++j) {
-    along(c.passes[j], f.feed);
-    if (j + 1 < c.passes.size())
-      along(std::vector<Vec2>(c.passes[j].rbegin(), c.passes[j].rend()), f.link);
+    at = s.to;
   }
-  along(c.cusp_pass, f.feed);
-  along({to}, f.feed);
   return 60.0 * min;
 }
 
@@ -322,22 +335,16 @@ std::vector<ChannelRun> runs_leaving_nothing(const Model& m, PixelStock stock,
   std::size_t next = 0;
   for (std::size_t k = 0; k + 1 < lp.pts.size(); ++k) {
     if (next < runs.size() && k == keep[runs[next].first - 1]) {
-      // The run: its plunges, its passes (the way back between two), the cusp pass, on to
-      // where the loops ended.
+      // The run as the emission writes it, on to where its loops ended.
       const ChannelRun& c = runs[next++];
-      for (const Vec2& h : c.holes)
-        stock.stamp(h);
-      at = c.holes.empty() ? at : c.holes.back();
-      for (std::size_t j = 0; j < c.passes.size(); ++j) {
-        for (const Vec2& v : c.passes[j])
-          feed_to(v);
-        if (j + 1 == c.passes.size()) break;
-        for (std::size_t v = c.passes[j].size() - 1; v-- > 0;)
-          feed_to(c.passes[j][v]);
+      for (const ChannelStep& s : channel_steps(c, lp.pts[keep[c.last]])) {
+        if (s.kind == ChannelStep::Kind::kPlunge) {
+          stock.stamp(s.to);
+          at = s.to;
+        } else {
+          feed_to(s.to);
+        }
       }
-      for (const Vec2& v : c.cusp_pass)
-        feed_to(v);
-      feed_to(lp.pts[keep[c.last]]);
       k = keep[c.last] - 1;
       continue;
     }
